@@ -1,0 +1,10 @@
+# Flags every gizmo target gets, through the interface target gizmo_flags.
+# Determinism: no FMA contraction (gcc's default in GNU mode is -ffp-contract=fast), no
+# -ffast-math, no -march: the simulator's doubles must be the same bits on every x86-64.
+add_library(gizmo_flags INTERFACE)
+target_compile_options(gizmo_flags INTERFACE -Wall -Wextra -ffp-contract=off)
+if(GIZMO_SANITIZE)
+  target_compile_options(gizmo_flags INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                               -fno-sanitize-recover=undefined)
+  target_link_options(gizmo_flags INTERFACE -fsanitize=address,undefined)
+endif()
