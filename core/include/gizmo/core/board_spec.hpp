@@ -1,0 +1,65 @@
+#pragma once
+// A board as plain data: what a board file says, before any simulation exists.
+// Readers produce it, writers consume it, and GameBoard is built from it. Numbers are doubles
+// because board files hold decimals; every scalar of the precision ladder starts from the exact
+// binary value of these doubles.
+#include <string>
+#include <vector>
+
+namespace gizmo {
+
+enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber };
+enum class KeyDirection { Down, Up };
+
+// Where a statement came from in its file (1-based; 0 when it was not read from a file).
+struct SourcePos {
+  int line = 0;
+  int column = 0;
+};
+
+struct GizmoSpec {
+  GizmoType type = GizmoType::Square;
+  std::string name;
+  int x = 0;            // upper-left corner of the bounding box, in L
+  int y = 0;
+  int orientation = 0;  // degrees clockwise on screen: 0, 90, 180 or 270
+  int width = 1;        // bounding box in L: 1×1 bumpers, 2×2 flippers, w×h absorbers
+  int height = 1;
+  SourcePos where;
+};
+
+struct BallSpec {
+  std::string name;
+  double x = 0, y = 0;    // centre, L
+  double vx = 0, vy = 0;  // L/s
+  SourcePos where;
+};
+
+struct ConnectSpec {
+  std::string source;  // "OuterWalls" names the outer walls
+  std::string target;
+  SourcePos where;
+};
+
+struct KeyConnectSpec {
+  int key = 0;  // Java key code
+  KeyDirection direction = KeyDirection::Down;
+  std::string target;
+  SourcePos where;
+};
+
+struct BoardSpec {
+  double gravity = 25.0;  // L/s², along +y (down)
+  double mu = 0.025;      // friction per s
+  double mu2 = 0.025;     // friction per L
+  std::vector<BallSpec> balls;
+  std::vector<GizmoSpec> gizmos;
+  std::vector<ConnectSpec> connections;
+  std::vector<KeyConnectSpec> keyConnections;
+};
+
+inline constexpr const char* kOuterWallsName = "OuterWalls";
+inline constexpr double kBallRadius = 0.25;
+inline constexpr int kBoardSize = 20;
+
+}  // namespace gizmo
