@@ -1,0 +1,65 @@
+#pragma once
+// buildBoard's definition; included by the explicit instantiations in core/src only.
+#include <stdexcept>
+
+#include "gizmo/core/board/build_board.hpp"
+#include "gizmo/core/gizmos/absorber.hpp"
+#include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/core/gizmos/polygonal_gizmo.hpp"
+
+namespace gizmo {
+
+template <class Real>
+std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams<Real> params) {
+  params.gravity = fromDouble<Real>(spec.gravity);
+  params.mu = fromDouble<Real>(spec.mu);
+  params.mu2 = fromDouble<Real>(spec.mu2);
+  auto board = std::make_unique<GameBoard<Real>>(params);
+  std::vector<Absorber<Real>*> absorbers;
+  for (const GizmoSpec& g : spec.gizmos) {
+    switch (g.type) {
+      case GizmoType::Square:
+      case GizmoType::Circle:
+      case GizmoType::Triangle:
+        board->add(std::make_unique<GridBumper<Real>>(g));
+        break;
+      case GizmoType::LeftFlipper:
+      case GizmoType::RightFlipper:
+        board->add(std::make_unique<Flipper<Real>>(g));
+        break;
+      case GizmoType::Absorber: {
+        auto a = std::make_unique<Absorber<Real>>(g);
+        absorbers.push_back(a.get());
+        board->add(std::move(a));
+        break;
+      }
+    }
+  }
+  for (const BallSpec& b : spec.balls) {
+    auto ball = std::make_unique<Ball<Real>>(b.name, Vec2<Real>(fromDouble<Real>(b.x), fromDouble<Real>(b.y)),
+                                             Vec2<Real>(fromDouble<Real>(b.vx), fromDouble<Real>(b.vy)));
+    Ball<Real>* raw = ball.get();
+    board->add(std::move(ball));
+    raw->setState(Real(0), raw->positionAt(Real(0)), raw->velocityAt(Real(0)), params);
+    // A ball at rest wholly inside an absorber counts as captured at time 0 (physics.md §2).
+    if (b.vx != 0 || b.vy != 0) continue;
+    for (Absorber<Real>* a : absorbers) {
+      const GizmoSpec s = a->spec();
+      const double r = kBallRadius;
+      if (b.x - r >= s.x && b.x + r <= s.x + s.width && b.y - r >= s.y && b.y + r <= s.y + s.height) {
+        a->holdAtStart(*raw, Real(0));
+        break;
+      }
+    }
+  }
+  auto idOf = [&](const std::string& name) {
+    const std::optional<GizmoId> id = board->find(name);
+    if (!id) throw std::invalid_argument("board names an unknown gizmo '" + name + "'");
+    return *id;
+  };
+  for (const ConnectSpec& c : spec.connections) board->connect(idOf(c.source), idOf(c.target));
+  for (const KeyConnectSpec& k : spec.keyConnections) board->keyConnect(k.key, k.direction, idOf(k.target));
+  return board;
+}
+
+}  // namespace gizmo

@@ -1,0 +1,157 @@
+#pragma once
+// The seed's GameBoard: a composite of gizmos (the ball among them), the triggers between
+// them, and the discrete-event queue that simulates them, kept between ticks.
+#include <array>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "gizmo/core/board/event_queue.hpp"
+#include "gizmo/core/board/observer.hpp"
+#include "gizmo/core/board/physics_params.hpp"
+#include "gizmo/core/gizmos/abstract_gizmo.hpp"
+#include "gizmo/core/gizmos/ball.hpp"
+
+namespace gizmo {
+
+// Which gizmo of a pair holds the collision handler (seed: the collider).
+enum class PairRole : std::uint8_t { None, FirstCollides, SecondCollides };
+
+// Seed: can collide / defer / never; a pair forms when neither side says never and at least
+// one side can collide. The first that can is the collider.
+template <class Real>
+PairRole formPair(const AbstractGizmo<Real>& a, const AbstractGizmo<Real>& b) {
+  const CollisionAnswer x = a.canCollideWith(b), y = b.canCollideWith(a);
+  if (x == CollisionAnswer::NeverCollides || y == CollisionAnswer::NeverCollides) return PairRole::None;
+  if (x == CollisionAnswer::CanCollide) return PairRole::FirstCollides;
+  if (y == CollisionAnswer::CanCollide) return PairRole::SecondCollides;
+  return PairRole::None;
+}
+
+struct CollisionPair {
+  GizmoId collider;
+  GizmoId collidee;
+};
+
+// Stopped instead of looping for ever: too many events at one instant of board time.
+class StallError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+template <class Real>
+class GameBoard final : private BoardAccess<Real> {
+ public:
+  explicit GameBoard(const PhysicsParams<Real>& params = PhysicsParams<Real>());
+  ~GameBoard() override;
+  GameBoard(const GameBoard&) = delete;
+  GameBoard& operator=(const GameBoard&) = delete;
+
+  // --- building ---------------------------------------------------------------------------------
+  GizmoId add(std::unique_ptr<AbstractGizmo<Real>> gizmo);
+  void connect(GizmoId source, GizmoId target);
+  void keyConnect(int key, KeyDirection direction, GizmoId target);
+
+  // --- running ----------------------------------------------------------------------------------
+  // Seed: simulate `time` seconds, in ticks no longer than the maximum tick length.
+  void tick(const Real& time);
+  // A key pressed or released at board time `time` (≥ now): key triggers perform their actions
+  // then, in the queue's order. Inputs are part of a run's data.
+  void scheduleInput(const Real& time, int key, KeyDirection direction);
+
+  void setObserver(BoardObserver<Real>* observer) { observer_ = observer; }
+
+  // --- looking at it --------------------------------------------------------------------------------
+  const Real& now() const override { return now_; }
+  const PhysicsParams<Real>& params() const override { return params_; }
+  std::size_t gizmoCount() const { return gizmos_.size(); }
+  AbstractGizmo<Real>& gizmo(GizmoId id) { return *gizmos_.at(static_cast<std::size_t>(id)); }
+  const AbstractGizmo<Real>& gizmo(GizmoId id) const { return *gizmos_.at(static_cast<std::size_t>(id)); }
+  std::optional<GizmoId> find(std::string_view name) const;
+  const std::vector<GizmoId>& ballIds() const { return balls_; }
+  Ball<Real>& ballById(GizmoId id) override;
+  static constexpr GizmoId outerWallsId() { return 0; }
+
+  // Seed: the collision pairs, formed once per board change from canCollideWith.
+  std::vector<CollisionPair> collisionPairs();
+  // Live events, earliest first.
+  std::vector<Event<Real>> pendingEvents() const { return queue_.snapshot(); }
+  const std::array<std::uint64_t, kEventKindCount>& executedCounts() const { return executed_; }
+  std::uint64_t executedTotal() const;
+
+  // Mechanical energy per unit mass: ½|v|² + g (20 − y), summed over free balls.
+  Real energy() const;
+
+  // The property system with the board's checks: a gizmo may not be moved onto another or off
+  // the board. On refusal returns the reason and changes nothing.
+  std::optional<std::string> setProperty(GizmoId id, std::string_view name, const PropertyValue& value);
+
+  BoardSpec toSpec() const;
+
+ private:
+  // BoardAccess, for the gizmos.
+  void markForRecompute(GizmoId id) override { recompute_.push_back(id); }
+  void schedule(EventKind kind, const Real& time, GizmoId a, GizmoId b, std::int32_t feature) override;
+  void reportRule(ModelRule rule, GizmoId gizmo, GizmoId other) override {
+    if (observer_) observer_->modelRuleApplied(now_, rule, gizmo, other);
+  }
+  void releaseContactsOn(GizmoId g) override;
+
+  void rebuild();
+  void tickOnce(const Real& length);
+  void advanceTo(const Real& t);
+  void execute(const Event<Real>& e);
+  void fireTriggersOf(GizmoId source);
+  void performAction(GizmoId target);
+  void recomputePending();
+  void scheduleBallEvents(Ball<Real>& ball);
+  void computePair(GizmoId ball, GizmoId other);
+  void gatherCandidates(GizmoId ball, std::vector<GizmoId>& out);
+  Real frictionTickTime(Ball<Real>& ball) const;
+  Real infinity() const;
+
+  PhysicsParams<Real> params_;
+  Real now_{0};
+  std::vector<std::unique_ptr<AbstractGizmo<Real>>> gizmos_;
+  std::vector<GizmoId> balls_;
+  std::vector<std::vector<GizmoId>> triggerTargets_;  // by source gizmo
+  std::map<std::pair<int, int>, std::vector<GizmoId>> keyTargets_;  // (key, direction) → targets
+  struct PendingInput {
+    Real time;
+    int key;
+    KeyDirection direction;
+  };
+  std::vector<PendingInput> inputs_;  // not yet queued, in time order
+  std::size_t nextInput_ = 0;
+
+  // Built once per board change.
+  bool built_ = false;
+  std::vector<std::int32_t> ballIndex_;        // gizmo id → index into balls_, or −1
+  std::vector<PairRole> roles_;                // balls × gizmos: the ball's role in the pair
+  std::array<std::vector<GizmoId>, 400> grid_; // 1 L cells → fixed gizmos that reach into them
+  std::vector<Box<Real>> boxes_;               // per gizmo: where it can be until validUntil_
+  std::vector<Real> validUntil_;               // per gizmo: its predictions hold until then
+  std::vector<std::uint32_t> stamp_;           // marks the gizmos of the current recomputation
+  std::uint32_t stampNow_ = 0;
+
+  EventQueue<Real> queue_;
+  std::vector<GizmoId> recompute_;
+  std::vector<GizmoId> candidates_;
+  std::array<std::uint64_t, kEventKindCount> executed_{};
+  std::uint64_t eventsThisInstant_ = 0;
+  BoardObserver<Real>* observer_ = nullptr;
+};
+
+}  // namespace gizmo
+
+// Compiled once per scalar in core/src (instantiate_*.cpp).
+namespace gizmo {
+extern template class GameBoard<float>;
+extern template class GameBoard<double>;
+extern template class GameBoard<long double>;
+extern template class GameBoard<Float128>;
+extern template class GameBoard<MpfrReal>;
+}  // namespace gizmo

@@ -1,0 +1,464 @@
+#pragma once
+// GameBoard's member definitions. Included only by the explicit instantiations in core/src,
+// one scalar per translation unit; everyone else includes game_board.hpp.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "gizmo/core/board/game_board.hpp"
+#include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/core/gizmos/outer_walls.hpp"
+
+namespace gizmo {
+
+namespace detail {
+// Events at one instant beyond which the board declares a stall rather than loop for ever.
+inline constexpr std::uint64_t kMaxEventsPerInstant = 1000000;
+// Widening of a ball's swept box, in L: far above rounding, far below any gap that matters.
+inline constexpr double kBroadPhaseMargin = 1e-6;
+inline int cellOf(double v) { return std::clamp(static_cast<int>(std::floor(v)), 0, kBoardSize - 1); }
+}  // namespace detail
+
+template <class Real>
+GameBoard<Real>::GameBoard(const PhysicsParams<Real>& params) : params_(params) {
+  add(std::make_unique<OuterWalls<Real>>());
+}
+
+template <class Real>
+GameBoard<Real>::~GameBoard() = default;
+
+template <class Real>
+Real GameBoard<Real>::infinity() const {
+  return Real(std::numeric_limits<double>::max());
+}
+
+template <class Real>
+GizmoId GameBoard<Real>::add(std::unique_ptr<AbstractGizmo<Real>> gizmo) {
+  const GizmoId id = static_cast<GizmoId>(gizmos_.size());
+  gizmo->setId(id);
+  if (gizmo->asBall()) balls_.push_back(id);
+  gizmos_.push_back(std::move(gizmo));
+  triggerTargets_.emplace_back();
+  built_ = false;
+  return id;
+}
+
+template <class Real>
+void GameBoard<Real>::connect(GizmoId source, GizmoId target) {
+  triggerTargets_.at(static_cast<std::size_t>(source)).push_back(target);
+}
+
+template <class Real>
+void GameBoard<Real>::keyConnect(int key, KeyDirection direction, GizmoId target) {
+  keyTargets_[{key, static_cast<int>(direction)}].push_back(target);
+}
+
+template <class Real>
+std::optional<GizmoId> GameBoard<Real>::find(std::string_view name) const {
+  for (const auto& g : gizmos_)
+    if (g->name() == name) return g->id();
+  return std::nullopt;
+}
+
+template <class Real>
+Ball<Real>& GameBoard<Real>::ballById(GizmoId id) {
+  Ball<Real>* b = gizmo(id).asBall();
+  if (!b) throw std::logic_error("gizmo " + std::to_string(id) + " is not a ball");
+  return *b;
+}
+
+template <class Real>
+std::uint64_t GameBoard<Real>::executedTotal() const {
+  std::uint64_t total = 0;
+  for (std::uint64_t n : executed_) total += n;
+  return total;
+}
+
+template <class Real>
+Real GameBoard<Real>::energy() const {
+  Real e(0);
+  const Real half = Real(1) / Real(2);
+  for (GizmoId id : balls_) {
+    const Ball<Real>& b = *gizmos_[static_cast<std::size_t>(id)]->asBall();
+    if (b.captured()) continue;
+    const Vec2<Real> v = b.velocityAt(now_), p = b.positionAt(now_);
+    e += half * lengthSquared(v) + params_.gravity * (Real(kBoardSize) - p.y);
+  }
+  return e;
+}
+
+template <class Real>
+std::vector<CollisionPair> GameBoard<Real>::collisionPairs() {
+  rebuild();
+  std::vector<CollisionPair> pairs;
+  for (std::size_t a = 0; a < gizmos_.size(); ++a)
+    for (std::size_t b = a + 1; b < gizmos_.size(); ++b) {
+      const PairRole r = formPair(*gizmos_[a], *gizmos_[b]);
+      if (r == PairRole::FirstCollides) pairs.push_back({GizmoId(a), GizmoId(b)});
+      if (r == PairRole::SecondCollides) pairs.push_back({GizmoId(b), GizmoId(a)});
+    }
+  return pairs;
+}
+
+// Forms the pairs and the broad-phase grid, and predicts everything afresh.
+template <class Real>
+void GameBoard<Real>::rebuild() {
+  if (built_) return;
+  const std::size_t n = gizmos_.size();
+  ballIndex_.assign(n, -1);
+  for (std::size_t i = 0; i < balls_.size(); ++i) ballIndex_[static_cast<std::size_t>(balls_[i])] = std::int32_t(i);
+  roles_.assign(balls_.size() * n, PairRole::None);
+  for (std::size_t i = 0; i < balls_.size(); ++i)
+    for (std::size_t g = 0; g < n; ++g)
+      if (GizmoId(g) != balls_[i]) roles_[i * n + g] = formPair(*gizmos_[static_cast<std::size_t>(balls_[i])], *gizmos_[g]);
+  for (auto& cell : grid_) cell.clear();
+  for (std::size_t g = 1; g < n; ++g) {  // the walls (id 0) are checked for every ball instead
+    if (gizmos_[g]->asBall()) continue;
+    const Box<Real> b = gizmos_[g]->bounds();
+    // Cells a gizmo merely touches on their edge need no entry: a ball there meets it through
+    // the neighbouring cell, whose box it also overlaps.
+    const int x0 = detail::cellOf(toDouble(b.lo.x)), x1 = detail::cellOf(toDouble(b.hi.x));
+    const int y0 = detail::cellOf(toDouble(b.lo.y)), y1 = detail::cellOf(toDouble(b.hi.y));
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) grid_[std::size_t(y * kBoardSize + x)].push_back(GizmoId(g));
+  }
+  boxes_.assign(n, Box<Real>{});
+  for (std::size_t g = 0; g < n; ++g) boxes_[g] = gizmos_[g]->bounds();
+  validUntil_.assign(n, infinity());
+  stamp_.assign(n, 0);
+  queue_.clear();
+  recompute_.clear();
+  built_ = true;
+  for (std::size_t g = 0; g < n; ++g) recompute_.push_back(GizmoId(g));
+  recomputePending();
+}
+
+template <class Real>
+void GameBoard<Real>::scheduleInput(const Real& time, int key, KeyDirection direction) {
+  if (time < now_) throw std::invalid_argument("input scheduled before the present");
+  // Kept in time order; equal times stay in the order given.
+  auto at = std::upper_bound(inputs_.begin() + std::ptrdiff_t(nextInput_), inputs_.end(), time,
+                             [](const Real& t, const PendingInput& in) { return t < in.time; });
+  inputs_.insert(at, PendingInput{time, key, direction});
+}
+
+template <class Real>
+void GameBoard<Real>::tick(const Real& time) {
+  rebuild();
+  Real left = time;
+  while (params_.maxTick < left) {
+    tickOnce(params_.maxTick);
+    left -= params_.maxTick;
+  }
+  if (Real(0) < left) tickOnce(left);
+}
+
+// Seed, steps 2–4: an end-of-tick event, then the earliest event until that one is reached.
+template <class Real>
+void GameBoard<Real>::tickOnce(const Real& length) {
+  const Real end = now_ + length;
+  schedule(EventKind::EndOfTick, end, kNoGizmo, kNoGizmo, -1);
+  while (nextInput_ < inputs_.size() && !(end < inputs_[nextInput_].time)) {
+    const PendingInput& in = inputs_[nextInput_++];
+    schedule(EventKind::Input, in.time, kNoGizmo, static_cast<GizmoId>(in.direction), in.key);
+  }
+  for (;;) {
+    const Event<Real> e = queue_.pop();
+    advanceTo(e.time);
+    execute(e);
+    recomputePending();
+    if (e.kind == EventKind::EndOfTick) break;
+  }
+  if (observer_) observer_->tickBoundary(now_);
+}
+
+// Seed 3a: every gizmo simulated up to the event. Ballistic balls and flippers move along
+// closed forms anchored at their last change, so only the classic model steps anything.
+template <class Real>
+void GameBoard<Real>::advanceTo(const Real& t) {
+  if (t == now_) {
+    if (++eventsThisInstant_ > detail::kMaxEventsPerInstant)
+      throw StallError("more than " + std::to_string(detail::kMaxEventsPerInstant) +
+                       " events at board time " + std::to_string(toDouble(t)));
+  } else {
+    eventsThisInstant_ = 0;
+  }
+  if (params_.model == MotionModel::Classic && now_ < t) {
+    const Real dt = t - now_;
+    for (GizmoId id : balls_)
+      if (gizmos_[static_cast<std::size_t>(id)]->tick(dt, *this)) recompute_.push_back(id);
+  }
+  now_ = t;
+}
+
+template <class Real>
+void GameBoard<Real>::execute(const Event<Real>& e) {
+  ++executed_[static_cast<std::size_t>(e.kind)];
+  EventOutcome<Real> outcome;
+  auto before = [&](GizmoId id) {
+    if (!observer_ || id < 0) return;
+    if (const Ball<Real>* b = gizmo(id).asBall())
+      outcome.balls.push_back(BallChange<Real>{id, b->positionAt(now_), b->velocityAt(now_), Vec2<Real>()});
+  };
+  before(e.a);
+  if (e.b != e.a && e.kind != EventKind::Input) before(e.b);
+
+  switch (e.kind) {
+    case EventKind::Collision:
+    case EventKind::Leave: {
+      AbstractGizmo<Real>& collider = gizmo(e.a);
+      AbstractGizmo<Real>& collidee = gizmo(e.b);
+      collider.collide(collidee, Contact<Real>{e.time, e.feature, e.kind}, *this);
+      if (e.kind == EventKind::Collision) {
+        fireTriggersOf(e.a);
+        fireTriggersOf(e.b);
+      }
+      recompute_.push_back(e.a);
+      recompute_.push_back(e.b);
+      break;
+    }
+    case EventKind::ContactEnd: {
+      Ball<Real>& b = ballById(e.a);
+      const Vec2<Real> p = b.positionAt(now_), v = b.velocityAt(now_);
+      b.leaveContact(*this);
+      b.setState(now_, p, v, params_);
+      recompute_.push_back(e.a);
+      break;
+    }
+    case EventKind::FlipperStop:
+      gizmo(e.a).handleOwnEvent(e, *this);
+      recompute_.push_back(e.a);
+      break;
+    case EventKind::FrictionTick: {
+      Ball<Real>& b = ballById(e.a);
+      const Vec2<Real> p = b.positionAt(now_);
+      b.setState(now_, p, Ball<Real>::frictionApplied(b.velocityAt(now_), params_.frictionStep, params_), params_);
+      ++b.nextFrictionIndex;
+      reportRule(ModelRule::FrictionApplied, e.a, kNoGizmo);
+      recompute_.push_back(e.a);
+      break;
+    }
+    case EventKind::Input: {
+      const KeyDirection dir = static_cast<KeyDirection>(e.b);
+      if (observer_) observer_->inputApplied(now_, e.feature, dir);
+      auto it = keyTargets_.find({e.feature, static_cast<int>(dir)});
+      if (it != keyTargets_.end())
+        for (GizmoId target : it->second) performAction(target);
+      break;
+    }
+    case EventKind::Recalculate:
+      recompute_.push_back(e.a);
+      break;
+    case EventKind::EndOfTick:
+      break;
+  }
+
+  if (observer_) {
+    for (BallChange<Real>& c : outcome.balls) c.velocityAfter = gizmo(c.ball).asBall()->velocityAt(now_);
+    observer_->eventExecuted(e, outcome);
+  }
+}
+
+template <class Real>
+void GameBoard<Real>::fireTriggersOf(GizmoId source) {
+  if (!gizmo(source).hasTrigger()) return;
+  // Copied: an action never changes connections, but the board must not depend on that.
+  const std::vector<GizmoId> targets = triggerTargets_[static_cast<std::size_t>(source)];
+  for (GizmoId target : targets) {
+    if (observer_) observer_->triggerFired(now_, source, target);
+    performAction(target);
+  }
+}
+
+// Seed: fireTrigger. Actions never fire their own gizmo's trigger (no chaining).
+template <class Real>
+void GameBoard<Real>::performAction(GizmoId target) {
+  if (observer_) observer_->actionPerformed(now_, target);
+  gizmo(target).fireTrigger(*this);
+}
+
+template <class Real>
+void GameBoard<Real>::schedule(EventKind kind, const Real& time, GizmoId a, GizmoId b, std::int32_t feature) {
+  Event<Real> e;
+  e.time = time;
+  e.kind = kind;
+  e.a = a;
+  e.b = b;
+  e.feature = feature;
+  e.sequence = queue_.push(e);
+  if (observer_) observer_->eventScheduled(e);
+}
+
+template <class Real>
+void GameBoard<Real>::releaseContactsOn(GizmoId g) {
+  for (GizmoId id : balls_) {
+    Ball<Real>& b = *gizmos_[static_cast<std::size_t>(id)]->asBall();
+    if (!b.contact() || b.contact()->gizmo != g) continue;
+    const Vec2<Real> p = b.positionAt(now_), v = b.velocityAt(now_);
+    b.leaveContact(*this);
+    b.setState(now_, p, v, params_);
+    recompute_.push_back(id);
+  }
+}
+
+// Seed 3b–3c: remove every event of the gizmos to recompute, then predict their pairs again.
+template <class Real>
+void GameBoard<Real>::recomputePending() {
+  if (recompute_.empty()) return;
+  std::vector<GizmoId> todo;
+  todo.swap(recompute_);
+  std::sort(todo.begin(), todo.end());
+  todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
+
+  for (GizmoId g : todo)
+    queue_.removeInvolving(g, [&](const Event<Real>& e) {
+      if (observer_) observer_->eventRemoved(e);
+    });
+
+  // Where each recomputed gizmo can be until its predictions run out.
+  ++stampNow_;
+  for (GizmoId g : todo) {
+    const std::size_t i = static_cast<std::size_t>(g);
+    stamp_[i] = stampNow_;  // marks membership of `todo`
+    if (Ball<Real>* b = gizmos_[i]->asBall()) {
+      if (b->captured() || b->resting()) {
+        validUntil_[i] = infinity();
+        boxes_[i] = b->bounds();
+      } else {
+        validUntil_[i] = now_ + params_.maxTick;
+        boxes_[i] = sweptBox(b->trajectoryAt(now_), params_.maxTick, Ball<Real>::radius(),
+                             fromDouble<Real>(detail::kBroadPhaseMargin));
+      }
+    } else {
+      const std::optional<Real> until = gizmos_[i]->predictionHorizon();
+      validUntil_[i] = until ? *until : infinity();
+    }
+  }
+  const std::uint32_t inTodo = stampNow_;
+
+  for (GizmoId g : todo) {
+    AbstractGizmo<Real>& G = *gizmos_[static_cast<std::size_t>(g)];
+    if (Ball<Real>* b = G.asBall()) {
+      if (b->captured()) continue;
+      scheduleBallEvents(*b);
+      gatherCandidates(g, candidates_);
+      for (GizmoId other : candidates_) {
+        const bool otherInTodo = stamp_[static_cast<std::size_t>(other)] == inTodo;
+        // A pair with both sides recomputed is predicted once: from the lower ball id, or
+        // from the ball when the other side is not a ball.
+        if (otherInTodo && gizmos_[static_cast<std::size_t>(other)]->asBall() && other < g) continue;
+        computePair(g, other);
+      }
+    } else {
+      G.scheduleOwnEvents(*this);
+      const Box<Real> reach = G.bounds();
+      for (GizmoId ballId : balls_) {
+        const std::size_t bi = static_cast<std::size_t>(ballId);
+        if (stamp_[bi] == inTodo || !boxes_[bi].overlaps(reach)) continue;
+        if (gizmos_[bi]->asBall()->captured()) continue;
+        computePair(ballId, g);
+      }
+    }
+  }
+}
+
+// The ball's own events: friction ticks, the end of a sliding contact, and the seed's
+// recalculate-collision-time event at the prediction horizon.
+template <class Real>
+void GameBoard<Real>::scheduleBallEvents(Ball<Real>& b) {
+  if (b.resting()) return;
+  const GizmoId id = b.id();
+  const Real horizon = now_ + params_.maxTick;
+  if (params_.model == MotionModel::Ballistic && (params_.mu != Real(0) || params_.mu2 != Real(0)))
+    schedule(EventKind::FrictionTick, frictionTickTime(b), id, kNoGizmo, -1);
+  if (const std::optional<Real> end = b.contactEndTime(now_, horizon))
+    schedule(EventKind::ContactEnd, *end, id, kNoGizmo, -1);
+  schedule(EventKind::Recalculate, horizon, id, kNoGizmo, -1);
+}
+
+// The first friction time k·h after now on the global grid.
+template <class Real>
+Real GameBoard<Real>::frictionTickTime(Ball<Real>& b) const {
+  const Real& h = params_.frictionStep;
+  std::int64_t& k = b.nextFrictionIndex;
+  if (Real(k) * h <= now_) k = static_cast<std::int64_t>(toDouble(Real(now_ / h)));
+  while (Real(k) * h <= now_) ++k;
+  while (k > 1 && now_ < Real(k - 1) * h) --k;
+  return Real(k) * h;
+}
+
+// Broad phase: fixed gizmos in the grid cells the ball's swept box covers, the walls, and the
+// balls whose boxes overlap it. Ordered by id so that scheduling order is deterministic.
+template <class Real>
+void GameBoard<Real>::gatherCandidates(GizmoId ballId, std::vector<GizmoId>& out) {
+  out.clear();
+  const Box<Real>& box = boxes_[static_cast<std::size_t>(ballId)];
+  out.push_back(outerWallsId());
+  const int x0 = detail::cellOf(toDouble(box.lo.x)), x1 = detail::cellOf(toDouble(box.hi.x));
+  const int y0 = detail::cellOf(toDouble(box.lo.y)), y1 = detail::cellOf(toDouble(box.hi.y));
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x)
+      for (GizmoId g : grid_[std::size_t(y * kBoardSize + x)]) out.push_back(g);
+  for (GizmoId other : balls_) {
+    if (other == ballId) continue;
+    const std::size_t oi = static_cast<std::size_t>(other);
+    if (gizmos_[oi]->asBall()->captured()) continue;
+    if (boxes_[oi].overlaps(box)) out.push_back(other);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+// Seed: predict one pair. A collision within both sides' horizons becomes a collision event;
+// anything later is found again when either side is next recomputed (the ball's own
+// recalculate event bounds that wait by the maximum tick length).
+template <class Real>
+void GameBoard<Real>::computePair(GizmoId ballId, GizmoId other) {
+  const std::size_t n = gizmos_.size();
+  const PairRole role = roles_[std::size_t(ballIndex_[std::size_t(ballId)]) * n + std::size_t(other)];
+  if (role == PairRole::None) return;
+  const Real limit = minOf(validUntil_[std::size_t(ballId)], validUntil_[std::size_t(other)]);
+  if (!(limit < infinity())) return;  // neither side can move: nothing to predict
+  const GizmoId collider = role == PairRole::FirstCollides ? ballId : other;
+  const GizmoId collidee = role == PairRole::FirstCollides ? other : ballId;
+  const std::optional<Contact<Real>> c =
+      gizmos_[std::size_t(collider)]->timeUntilCollision(*gizmos_[std::size_t(collidee)], now_, limit, params_);
+  if (c) schedule(c->kind, c->time, collider, collidee, c->feature);
+}
+
+template <class Real>
+std::optional<std::string> GameBoard<Real>::setProperty(GizmoId id, std::string_view name, const PropertyValue& value) {
+  AbstractGizmo<Real>& g = gizmo(id);
+  const std::optional<PropertyValue> old = g.property(name);
+  if (!old) return "gizmo '" + g.name() + "' has no property '" + std::string(name) + "'";
+  if (!g.setPropertyUnchecked(name, value)) return "value of the wrong kind for property '" + std::string(name) + "'";
+  const std::vector<SpecProblem> problems = checkBoardSpec(toSpec());
+  if (!problems.empty()) {
+    g.setPropertyUnchecked(name, *old);
+    return problems.front().message;
+  }
+  built_ = false;
+  return std::nullopt;
+}
+
+template <class Real>
+BoardSpec GameBoard<Real>::toSpec() const {
+  BoardSpec spec;
+  spec.gravity = toDouble(params_.gravity);
+  spec.mu = toDouble(params_.mu);
+  spec.mu2 = toDouble(params_.mu2);
+  for (const auto& g : gizmos_) {
+    if (const Ball<Real>* b = g->asBall()) spec.balls.push_back(b->ballSpec(now_));
+    else if (g->id() != outerWallsId()) spec.gizmos.push_back(g->spec());
+  }
+  for (std::size_t s = 0; s < triggerTargets_.size(); ++s)
+    for (GizmoId t : triggerTargets_[s])
+      spec.connections.push_back(ConnectSpec{gizmos_[s]->name(), gizmo(t).name(), SourcePos{}});
+  for (const auto& [key, targets] : keyTargets_)
+    for (GizmoId t : targets)
+      spec.keyConnections.push_back(
+          KeyConnectSpec{key.first, static_cast<KeyDirection>(key.second), gizmo(t).name(), SourcePos{}});
+  return spec;
+}
+
+}  // namespace gizmo

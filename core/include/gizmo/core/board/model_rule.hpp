@@ -1,0 +1,33 @@
+#pragma once
+#include <cstdint>
+#include <string_view>
+
+namespace gizmo {
+
+// Rules that the models apply beyond plain reflection (physics.md §6: each is a recorded decision).
+enum class ModelRule : std::uint8_t {
+  FrictionApplied,   // the friction law applied to a ball (ballistic: at a friction tick)
+  ContactBegin,      // a slow ball pressed onto a segment starts sliding along it
+  ContactEnd,        // it leaves that segment (end reached, or pushed off)
+  MinimumBounce,     // a slow hit on a round feature leaves at the minimum bounce speed
+  Wedged,            // a slow ball pressed onto a second surface while sliding comes to rest
+  FlipperBlocked,    // a flipper pinching a ball stops where it is
+  Captured,          // an absorber captured a ball
+  Released,          // an absorber fired a ball
+};
+
+inline std::string_view modelRuleName(ModelRule r) {
+  switch (r) {
+    case ModelRule::FrictionApplied: return "friction";
+    case ModelRule::ContactBegin: return "contact-begin";
+    case ModelRule::ContactEnd: return "contact-end";
+    case ModelRule::MinimumBounce: return "minimum-bounce";
+    case ModelRule::Wedged: return "wedged";
+    case ModelRule::FlipperBlocked: return "flipper-blocked";
+    case ModelRule::Captured: return "captured";
+    case ModelRule::Released: return "released";
+  }
+  return "?";
+}
+
+}  // namespace gizmo

@@ -1,0 +1,80 @@
+#pragma once
+// Times of impact of a ball against each kind of feature, as times τ from the present in
+// [0, limit]. Every function reports the first *entry* only: the gap between ball and feature
+// going from positive to zero while closing (physics.md §5: a ball that touches or overlaps a
+// feature while receding gets no collision). Roots come from the certified first-root
+// searches of math/roots.hpp, which never step over a root.
+#include <array>
+#include <optional>
+
+#include "gizmo/core/geometry/features.hpp"
+#include "gizmo/core/geometry/trajectory.hpp"
+#include "gizmo/core/math/roots.hpp"
+
+namespace gizmo {
+
+// The gap polynomial g(τ) = c0 + c1 τ + c2 τ² + … is already touching at τ = 0 and about to
+// close: the first non-zero derivative at 0 is negative. firstEntry handles g'(0) < 0; this
+// also catches a ball at rest on a surface that gravity presses into it (g'(0) = 0, g'' < 0).
+template <class Real>
+bool closingFromContact(const std::array<Real, 5>& c) {
+  if (Real(0) < c[0]) return false;
+  for (int i = 1; i < 5; ++i) {
+    if (c[i] < Real(0)) return true;
+    if (Real(0) < c[i]) return false;
+  }
+  return false;
+}
+
+template <class Real, class Accept>
+std::optional<Real> firstPolynomialEntry(const std::array<Real, 5>& c, const Real& limit, Accept&& accept) {
+  if (closingFromContact(c) && accept(Real(0))) return Real(0);
+  return math::firstEntry(c, Real(0), limit, accept);
+}
+
+// Ball (centre path t, radius r) against a segment, from its free side only; the contact point
+// must lie on the segment (beyond its ends the vertex circles take over).
+template <class Real>
+std::optional<Real> segmentTimeOfImpact(const Trajectory<Real>& t, const Real& r, const SegmentFeature<Real>& s,
+                                        const Real& limit) {
+  const Vec2<Real> d = t.p - s.a;
+  const Real height = dot(d, s.normal);
+  if (height < Real(0)) return std::nullopt;  // centre behind the line: inside the gizmo
+  const Real half = Real(1) / Real(2);
+  const std::array<Real, 5> c{height - r, dot(t.v, s.normal), half * dot(t.a, s.normal), Real(0), Real(0)};
+  // Cheap rejection: the gap cannot close within the limit.
+  if (Real(0) < c[0] && Real(0) <= c[1] && Real(0) <= c[2]) return std::nullopt;
+  auto onSegment = [&](const Real& tau) {
+    const Real u = dot(t.positionAt(tau) - s.a, s.direction);
+    return Real(0) <= u && u <= s.length;
+  };
+  return firstPolynomialEntry(c, limit, onSegment);
+}
+
+// Ball against a circle of radius R around centre (R = 0: a polygon's vertex), or two balls
+// with the relative path: the gap is |d(τ)|² − (r + R)², a quartic when a ≠ 0.
+template <class Real>
+std::optional<Real> circleTimeOfImpact(const Trajectory<Real>& t, const Real& r, const CircleFeature<Real>& circle,
+                                       const Real& limit) {
+  const Vec2<Real> d = t.p - circle.centre;
+  const Real reach = r + circle.radius;
+  // Cheap rejection: the path cannot come within reach in time.
+  const Real half = Real(1) / Real(2);
+  const Real travel = length(t.v) * limit + half * length(t.a) * limit * limit;
+  const Real dist2 = lengthSquared(d);
+  const Real far = reach + travel;
+  if (far * far < dist2) return std::nullopt;
+  const Real quarter = Real(1) / Real(4);
+  const std::array<Real, 5> c{dist2 - reach * reach, Real(2) * dot(d, t.v), lengthSquared(t.v) + dot(d, t.a),
+                              dot(t.v, t.a), quarter * lengthSquared(t.a)};
+  return firstPolynomialEntry(c, limit, [](const Real&) { return true; });
+}
+
+template <class Real>
+std::optional<Real> ballTimeOfImpact(const Trajectory<Real>& x, const Trajectory<Real>& y, const Real& r,
+                                     const Real& limit) {
+  const Trajectory<Real> relative{x.p - y.p, x.v - y.v, x.a - y.a};
+  return circleTimeOfImpact(relative, r, CircleFeature<Real>{Vec2<Real>(), r}, limit);
+}
+
+}  // namespace gizmo

@@ -1,0 +1,51 @@
+#pragma once
+// A ball's path from the present: p(τ) = p + v τ + ½ a τ². The classic model predicts with
+// a = 0 (straight lines), the ballistic model with the effective gravity.
+#include "gizmo/core/geometry/vec2.hpp"
+
+namespace gizmo {
+
+template <class Real>
+struct Trajectory {
+  Vec2<Real> p, v, a;
+
+  Vec2<Real> positionAt(const Real& tau) const {
+    const Real half = Real(1) / Real(2);
+    return p + tau * v + (half * tau * tau) * a;
+  }
+  Vec2<Real> velocityAt(const Real& tau) const { return v + tau * a; }
+};
+
+// Axis-aligned box, for the broad phase.
+template <class Real>
+struct Box {
+  Vec2<Real> lo, hi;
+  bool overlaps(const Box& o) const { return !(hi.x < o.lo.x || o.hi.x < lo.x || hi.y < o.lo.y || o.hi.y < lo.y); }
+};
+
+// The box that holds every point within `radius` of the path over [0, T], grown by `margin`.
+template <class Real>
+Box<Real> sweptBox(const Trajectory<Real>& t, const Real& T, const Real& radius, const Real& margin) {
+  auto axis = [&](const Real& p, const Real& v, const Real& a, Real& lo, Real& hi) {
+    const Real half = Real(1) / Real(2);
+    const Real end = p + v * T + half * a * T * T;
+    lo = minOf(p, end);
+    hi = maxOf(p, end);
+    if (a != Real(0)) {
+      const Real tStar = -v / a;  // the turning point of this coordinate
+      if (Real(0) < tStar && tStar < T) {
+        const Real ext = p + v * tStar + half * a * tStar * tStar;
+        lo = minOf(lo, ext);
+        hi = maxOf(hi, ext);
+      }
+    }
+    lo = lo - radius - margin;
+    hi = hi + radius + margin;
+  };
+  Box<Real> b;
+  axis(t.p.x, t.v.x, t.a.x, b.lo.x, b.hi.x);
+  axis(t.p.y, t.v.y, t.a.y, b.lo.y, b.hi.y);
+  return b;
+}
+
+}  // namespace gizmo

@@ -1,0 +1,100 @@
+#pragma once
+// The absorber (physics.md §2): a rectangle that captures balls instead of reflecting them,
+// holds them at its lower-right corner, and fires the first one it captured when triggered.
+#include <algorithm>
+#include <deque>
+
+#include "gizmo/core/gizmos/polygonal_gizmo.hpp"
+
+namespace gizmo {
+
+template <class Real>
+class Absorber final : public GridBumper<Real> {
+ public:
+  explicit Absorber(const GizmoSpec& spec) : GridBumper<Real>(spec) {}
+
+  GizmoKind kind() const override { return GizmoKind::Absorber; }
+
+  Vec2<Real> holdPosition() const {
+    const GizmoSpec s = this->spec();
+    const Real r = Ball<Real>::radius();
+    return Vec2<Real>(Real(s.x + s.width) - r, Real(s.y + s.height) - r);
+  }
+  static Vec2<Real> fireVelocity() { return Vec2<Real>(Real(0), Real(-50)); }
+
+  const std::deque<GizmoId>& held() const { return held_; }
+  const std::vector<GizmoId>& firedStillInside() const { return firedInside_; }
+
+  // A ball placed at rest inside the absorber by a board file is held from time 0.
+  void holdAtStart(Ball<Real>& ball, const Real& now) {
+    ball.capture(now, holdPosition());
+    held_.push_back(ball.id());
+  }
+
+  std::optional<Contact<Real>> timeUntilCollision(const AbstractGizmo<Real>& other, const Real& now, const Real& limit,
+                                                  const PhysicsParams<Real>& params) const override {
+    const Ball<Real>* ball = other.asBall();
+    if (!ball || ball->captured()) return std::nullopt;
+    if (std::find(firedInside_.begin(), firedInside_.end(), ball->id()) != firedInside_.end())
+      return leaveTime(*ball, now, limit);
+    return GridBumper<Real>::timeUntilCollision(other, now, limit, params);
+  }
+
+  void collide(AbstractGizmo<Real>& other, const Contact<Real>& contact, BoardAccess<Real>& board) override {
+    if (contact.kind == EventKind::Leave) {
+      std::erase(firedInside_, other.id());
+      return;
+    }
+    GridBumper<Real>::collide(other, contact, board);
+  }
+
+  // Seed: fireTrigger. Fires the first held ball unless one it fired is still inside.
+  void fireTrigger(BoardAccess<Real>& board) override {
+    if (held_.empty() || !firedInside_.empty()) return;
+    const GizmoId id = held_.front();
+    held_.pop_front();
+    Ball<Real>& ball = board.ballById(id);
+    ball.release(board.now(), holdPosition(), fireVelocity(), board.params());
+    firedInside_.push_back(id);
+    board.reportRule(ModelRule::Released, this->id(), id);
+    board.markForRecompute(id);
+    board.markForRecompute(this->id());
+  }
+
+ protected:
+  void respond(Ball<Real>& ball, const Contact<Real>&, BoardAccess<Real>& board) override {
+    ball.capture(board.now(), holdPosition());
+    held_.push_back(ball.id());
+    board.reportRule(ModelRule::Captured, this->id(), ball.id());
+  }
+
+ private:
+  // When a ball it fired stops overlapping the rectangle. The rectangle grown by the ball's
+  // radius stands in for the exact rounded one: the ball counts as gone a little later at
+  // the corners, never earlier.
+  std::optional<Contact<Real>> leaveTime(const Ball<Real>& ball, const Real& now, const Real& limit) const {
+    const GizmoSpec s = this->spec();
+    const Real r = Ball<Real>::radius();
+    const Trajectory<Real> t = ball.trajectoryAt(now);
+    const Real half = Real(1) / Real(2);
+    // Each gap reaches zero as the centre crosses one grown side outwards.
+    const std::array<std::array<Real, 5>, 4> gaps{{
+        {t.p.y - (Real(s.y) - r), t.v.y, half * t.a.y, Real(0), Real(0)},
+        {Real(s.y + s.height) + r - t.p.y, -t.v.y, -half * t.a.y, Real(0), Real(0)},
+        {t.p.x - (Real(s.x) - r), t.v.x, half * t.a.x, Real(0), Real(0)},
+        {Real(s.x + s.width) + r - t.p.x, -t.v.x, -half * t.a.x, Real(0), Real(0)},
+    }};
+    std::optional<Real> best;
+    for (const auto& c : gaps) {
+      const std::optional<Real> tau = math::firstEntry(c, Real(0), limit - now, [](const Real&) { return true; });
+      if (tau && (!best || *tau < *best)) best = tau;
+    }
+    if (!best) return std::nullopt;
+    return Contact<Real>{now + *best, 0, EventKind::Leave};
+  }
+
+  std::deque<GizmoId> held_;
+  std::vector<GizmoId> firedInside_;
+};
+
+}  // namespace gizmo

@@ -1,0 +1,110 @@
+#pragma once
+// The seed's AbstractGizmo: every piece on the board, the ball included. A gizmo says which
+// other gizmos it has collision handlers for (canCollideWith), computes the time until it
+// collides with them, resolves the collision, and performs its action when triggered.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gizmo/core/board/event.hpp"
+#include "gizmo/core/board/model_rule.hpp"
+#include "gizmo/core/board/physics_params.hpp"
+#include "gizmo/core/board_spec.hpp"
+#include "gizmo/core/geometry/trajectory.hpp"
+#include "gizmo/core/gizmos/property.hpp"
+
+namespace gizmo {
+
+enum class CollisionAnswer { CanCollide, Defer, NeverCollides };
+
+enum class GizmoKind { Ball, OuterWalls, Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber };
+
+template <class Real> class Ball;
+
+// A predicted collision: when, and through which of the collider's features.
+template <class Real>
+struct Contact {
+  Real time{0};  // absolute board time
+  std::int32_t feature = -1;
+  EventKind kind = EventKind::Collision;
+};
+
+// What a gizmo may ask of the board while it handles an event or performs its action.
+template <class Real>
+class BoardAccess {
+ public:
+  virtual ~BoardAccess() = default;
+  virtual const Real& now() const = 0;
+  virtual const PhysicsParams<Real>& params() const = 0;
+  virtual Ball<Real>& ballById(GizmoId id) = 0;
+  virtual void markForRecompute(GizmoId id) = 0;
+  virtual void schedule(EventKind kind, const Real& time, GizmoId a, GizmoId b, std::int32_t feature) = 0;
+  virtual void reportRule(ModelRule rule, GizmoId gizmo, GizmoId other) = 0;
+  // Every ball sliding on gizmo g leaves that contact (g is about to move).
+  virtual void releaseContactsOn(GizmoId g) = 0;
+};
+
+template <class Real>
+class AbstractGizmo {
+ public:
+  explicit AbstractGizmo(std::string name) : name_(std::move(name)) {}
+  virtual ~AbstractGizmo() = default;
+  AbstractGizmo(const AbstractGizmo&) = delete;
+  AbstractGizmo& operator=(const AbstractGizmo&) = delete;
+
+  GizmoId id() const { return id_; }
+  void setId(GizmoId id) { id_ = id; }  // by the board, when the gizmo joins it
+  const std::string& name() const { return name_; }
+  void rename(std::string name) { name_ = std::move(name); }
+
+  virtual GizmoKind kind() const = 0;
+  virtual Ball<Real>* asBall() { return nullptr; }
+  virtual const Ball<Real>* asBall() const { return nullptr; }
+
+  // Seed: can collide (it has a handler for other), defer (other must handle it), or never.
+  virtual CollisionAnswer canCollideWith(const AbstractGizmo& other) const = 0;
+
+  // The collider's prediction: the first contact with other in [now, limit], if any.
+  virtual std::optional<Contact<Real>> timeUntilCollision(const AbstractGizmo& /*other*/, const Real& /*now*/,
+                                                          const Real& /*limit*/,
+                                                          const PhysicsParams<Real>& /*params*/) const {
+    return std::nullopt;
+  }
+  // The collider's handler, run at the contact's time.
+  virtual void collide(AbstractGizmo& /*other*/, const Contact<Real>& /*contact*/, BoardAccess<Real>& /*board*/) {}
+
+  // Simulates the gizmo for dt; true when its velocity changed (seed: schedule a recomputation).
+  virtual bool tick(const Real& /*dt*/, BoardAccess<Real>& /*board*/) { return false; }
+
+  // Whether hits on this gizmo produce a trigger (physics.md §3: all but the ball).
+  virtual bool hasTrigger() const { return true; }
+  // Seed: the action performed when a trigger connected to this gizmo fires.
+  virtual void fireTrigger(BoardAccess<Real>& /*board*/) {}
+
+  // Events of the gizmo's own (a flipper's stop); scheduled whenever it is recomputed.
+  virtual void scheduleOwnEvents(BoardAccess<Real>& /*board*/) {}
+  virtual void handleOwnEvent(const Event<Real>& /*event*/, BoardAccess<Real>& /*board*/) {}
+
+  // Until when predictions made now against this gizmo hold (a swinging flipper: until it
+  // stops); nullopt for a gizmo that stays as it is.
+  virtual std::optional<Real> predictionHorizon() const { return std::nullopt; }
+
+  // Everything the gizmo can ever touch, for the broad phase.
+  virtual Box<Real> bounds() const = 0;
+
+  // The gizmo as plain data (for writing boards and for the property system's checks).
+  virtual GizmoSpec spec() const = 0;
+
+  // The property system: typed values readable and writable by name.
+  virtual std::vector<std::string> propertyNames() const = 0;
+  virtual std::optional<PropertyValue> property(std::string_view name) const = 0;
+  // Applies a value without checking it against the rest of the board (GameBoard does that).
+  virtual bool setPropertyUnchecked(std::string_view name, const PropertyValue& value) = 0;
+
+ private:
+  std::string name_;
+  GizmoId id_ = kNoGizmo;
+};
+
+}  // namespace gizmo

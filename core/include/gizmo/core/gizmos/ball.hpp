@@ -1,0 +1,293 @@
+#pragma once
+// The ball: the one gizmo that moves. Its path between events is anchored at the time its
+// velocity last changed: p(t) = p₀ + v₀ τ + ½ a τ², τ = t − t₀ (a = 0 in the classic model,
+// which moves balls in straight lines and applies gravity in tick()).
+#include <optional>
+
+#include "gizmo/core/geometry/features.hpp"
+#include "gizmo/core/geometry/time_of_impact.hpp"
+#include "gizmo/core/gizmos/abstract_gizmo.hpp"
+
+namespace gizmo {
+
+// A straight surface the ball slides along (the resting-contact rule, docs/physics.md).
+template <class Real>
+struct SurfaceContact {
+  GizmoId gizmo = kNoGizmo;
+  std::int32_t feature = -1;
+  SegmentFeature<Real> segment;
+  Real coefficient{1};
+};
+
+// How a surface responds to a slow hit: a static segment can carry a sliding ball, anything
+// round or moving gets the minimum bounce instead.
+enum class SurfaceType { StaticSegment, Round };
+
+template <class Real>
+class Ball final : public AbstractGizmo<Real> {
+ public:
+  Ball(std::string name, const Vec2<Real>& position, const Vec2<Real>& velocity)
+      : AbstractGizmo<Real>(std::move(name)), p0_(position), v0_(velocity) {}
+
+  static Real radius() { return fromDouble<Real>(kBallRadius); }
+
+  GizmoKind kind() const override { return GizmoKind::Ball; }
+  Ball* asBall() override { return this; }
+  const Ball* asBall() const override { return this; }
+  bool hasTrigger() const override { return false; }
+
+  CollisionAnswer canCollideWith(const AbstractGizmo<Real>& other) const override {
+    if (other.asBall()) return CollisionAnswer::CanCollide;
+    return CollisionAnswer::Defer;  // every other gizmo knows how to meet a ball
+  }
+
+  // --- state --------------------------------------------------------------------------------
+  Vec2<Real> positionAt(const Real& t) const {
+    if (captured_) return p0_;
+    return trajectoryAt(t).p;
+  }
+  Vec2<Real> velocityAt(const Real& t) const {
+    if (captured_) return Vec2<Real>();
+    return v0_ + (t - t0_) * a_;
+  }
+  Trajectory<Real> trajectoryAt(const Real& t) const {
+    const Trajectory<Real> anchored{p0_, v0_, a_};
+    const Real tau = t - t0_;
+    return Trajectory<Real>{anchored.positionAt(tau), anchored.velocityAt(tau), a_};
+  }
+  const Vec2<Real>& acceleration() const { return a_; }
+  const Real& anchorTime() const { return t0_; }
+
+  // Re-anchors the path at time t; the acceleration follows the model and the contact.
+  void setState(const Real& t, const Vec2<Real>& p, const Vec2<Real>& v, const PhysicsParams<Real>& params) {
+    t0_ = t;
+    p0_ = p;
+    v0_ = v;
+    a_ = params.model == MotionModel::Ballistic ? effectiveGravity(params) : Vec2<Real>();
+    if (wedged_) a_ = Vec2<Real>();
+  }
+
+  // Gravity less the part a supporting surface takes (none when free or wedged).
+  Vec2<Real> effectiveGravity(const PhysicsParams<Real>& params) const {
+    if (wedged_) return Vec2<Real>();
+    const Vec2<Real> g(Real(0), params.gravity);
+    if (!contact_) return g;
+    const Vec2<Real>& n = contact_->segment.normal;
+    return g - dot(g, n) * n;
+  }
+
+  bool captured() const { return captured_; }
+  void capture(const Real& t, const Vec2<Real>& holdPosition) {
+    captured_ = true;
+    contact_.reset();
+    wedged_ = false;
+    t0_ = t;
+    p0_ = holdPosition;
+    v0_ = Vec2<Real>();
+    a_ = Vec2<Real>();
+  }
+  void release(const Real& t, const Vec2<Real>& p, const Vec2<Real>& v, const PhysicsParams<Real>& params) {
+    captured_ = false;
+    setState(t, p, v, params);
+  }
+
+  const std::optional<SurfaceContact<Real>>& contact() const { return contact_; }
+  bool wedged() const { return wedged_; }
+  // At rest for good until something hits it: no friction, no recalculation needed.
+  bool resting() const { return captured_ || (v0_ == Vec2<Real>() && a_ == Vec2<Real>()); }
+
+  // Ballistic friction ticks run on the global grid k·h; this is the next k for this ball.
+  std::int64_t nextFrictionIndex = 1;
+
+  // --- collisions ----------------------------------------------------------------------------
+  std::optional<Contact<Real>> timeUntilCollision(const AbstractGizmo<Real>& other, const Real& now, const Real& limit,
+                                                  const PhysicsParams<Real>&) const override {
+    const Ball* b = other.asBall();
+    if (!b || captured_ || b->captured()) return std::nullopt;
+    const std::optional<Real> tau = ballTimeOfImpact(trajectoryAt(now), b->trajectoryAt(now), radius(), limit - now);
+    if (!tau) return std::nullopt;
+    return Contact<Real>{now + *tau, 0, EventKind::Collision};
+  }
+
+  // Equal masses, elastic: the normal components are exchanged (physics.md §5).
+  void collide(AbstractGizmo<Real>& other, const Contact<Real>&, BoardAccess<Real>& board) override {
+    Ball* b = other.asBall();
+    if (!b) return;
+    const Real& now = board.now();
+    const PhysicsParams<Real>& params = board.params();
+    const Vec2<Real> pa = positionAt(now), pb = b->positionAt(now);
+    Vec2<Real> va = velocityAt(now), vb = b->velocityAt(now);
+    const Vec2<Real> d = pa - pb;
+    const Real dist = length(d);
+    if (dist == Real(0)) return;  // coincident centres: no normal to push along
+    const Vec2<Real> n(d.x / dist, d.y / dist);
+    const Real closing = dot(va - vb, n);
+    if (!(closing < Real(0))) return;
+    Real exchange = -closing;  // added to a along n, taken from b
+    const bool supported = contact_ || wedged_ || b->contact() || b->wedged();
+    if (supported && params.gravity != Real(0) && -closing < params.restSpeed) {
+      exchange = (params.restSpeed - closing) / Real(2);
+      board.reportRule(ModelRule::MinimumBounce, this->id(), b->id());
+    }
+    va += exchange * n;
+    vb -= exchange * n;
+    setVelocity(now, pa, va, board);
+    b->setVelocity(now, pb, vb, board);
+  }
+
+  // Reflects off a surface with normal n (towards the ball), coefficient c and surface velocity
+  // u, applying the slow-contact rules. Returns false when the ball was not approaching.
+  bool reflect(const Vec2<Real>& n, const Real& c, const Vec2<Real>& u, SurfaceType type,
+               const SurfaceContact<Real>* surface, BoardAccess<Real>& board) {
+    const Real& now = board.now();
+    const PhysicsParams<Real>& params = board.params();
+    const Vec2<Real> p = positionAt(now);
+    Vec2<Real> v = velocityAt(now);
+    const Real closing = dot(v - u, n);
+    if (!(closing < Real(0))) return false;
+    const Vec2<Real> g(Real(0), params.gravity);
+    const bool pressed = dot(g, n) < Real(0);
+    if (pressed && -closing < params.restSpeed) {
+      if (type == SurfaceType::StaticSegment && surface) {
+        if (contact_ && !(contact_->gizmo == surface->gizmo && contact_->feature == surface->feature)) {
+          // Pressed onto a second surface while sliding on one: it rests in the corner.
+          wedged_ = true;
+          board.reportRule(ModelRule::Wedged, this->id(), surface->gizmo);
+          setState(now, p, Vec2<Real>(), params);
+          return true;
+        }
+        contact_ = *surface;
+        board.reportRule(ModelRule::ContactBegin, this->id(), surface->gizmo);
+        setState(now, p, v - dot(v, n) * n, params);
+        return true;
+      }
+      v += (params.restSpeed - closing) * n;
+      board.reportRule(ModelRule::MinimumBounce, this->id(), kNoGizmo);
+    } else {
+      v -= ((Real(1) + c) * closing) * n;
+    }
+    setVelocity(now, p, v, board);
+    return true;
+  }
+
+  // A new velocity from a hit: a sliding ball keeps, bounces off or leaves its surface; a
+  // wedged ball wakes up.
+  void setVelocity(const Real& now, const Vec2<Real>& p, Vec2<Real> v, BoardAccess<Real>& board) {
+    const PhysicsParams<Real>& params = board.params();
+    if (wedged_) {
+      wedged_ = false;
+      contact_.reset();
+    }
+    if (contact_) {
+      const Vec2<Real>& n = contact_->segment.normal;
+      const Real vn = dot(v, n);
+      if (vn < -params.restSpeed) {
+        v -= ((Real(1) + contact_->coefficient) * vn) * n;
+        leaveContact(board);
+      } else if (params.restSpeed < vn) {
+        leaveContact(board);
+      } else {
+        v -= vn * n;
+      }
+    }
+    setState(now, p, v, params);
+  }
+
+  void leaveContact(BoardAccess<Real>& board) {
+    if (!contact_) return;
+    board.reportRule(ModelRule::ContactEnd, this->id(), contact_->gizmo);
+    contact_.reset();
+    wedged_ = false;
+  }
+
+  // When the sliding contact runs off the end of its segment, as an absolute time.
+  std::optional<Real> contactEndTime(const Real& now, const Real& limit) const {
+    if (!contact_ || wedged_) return std::nullopt;
+    const Trajectory<Real> t = trajectoryAt(now);
+    const SegmentFeature<Real>& s = contact_->segment;
+    const Real half = Real(1) / Real(2);
+    const Real u0 = dot(t.p - s.a, s.direction), du = dot(t.v, s.direction), ddu = half * dot(t.a, s.direction);
+    // Leaving past a (u falls through 0) or past b (u rises through length): both are entries
+    // of a quadratic gap, which the root finder handles.
+    const std::array<Real, 5> pastA{u0, du, ddu, Real(0), Real(0)};
+    const std::array<Real, 5> pastB{s.length - u0, -du, -ddu, Real(0), Real(0)};
+    std::optional<Real> best;
+    for (const auto& c : {pastA, pastB}) {
+      const std::optional<Real> tau = math::firstEntry(c, Real(0), limit - now, [](const Real&) { return true; });
+      if (tau && (!best || *tau < *best)) best = tau;
+    }
+    if (!best) return std::nullopt;
+    return now + *best;
+  }
+
+  // --- the classic model's step ----------------------------------------------------------------
+  // Seed: simulate for dt. p += v dt, then friction and gravity update v (physics.md §6).
+  bool tick(const Real& dt, BoardAccess<Real>& board) override {
+    if (captured_ || board.params().model != MotionModel::Classic) return false;
+    const PhysicsParams<Real>& params = board.params();
+    const Vec2<Real> p = p0_ + dt * v0_;
+    Vec2<Real> v = frictionApplied(v0_, dt, params) + dt * effectiveGravity(params);
+    const bool changed = !(v == v0_);
+    t0_ = t0_ + dt;
+    p0_ = p;
+    v0_ = v;
+    return changed;
+  }
+
+  // The friction law v ← v (1 − μ Δt − μ₂ |v| Δt). The factor is kept at 0 or above: beyond
+  // 1/(μ₂ Δt) the per-step law would reverse the ball, which no friction does.
+  static Vec2<Real> frictionApplied(const Vec2<Real>& v, const Real& dt, const PhysicsParams<Real>& params) {
+    if (params.mu == Real(0) && params.mu2 == Real(0)) return v;
+    Real factor = Real(1) - params.mu * dt - params.mu2 * length(v) * dt;
+    if (factor < Real(0)) factor = Real(0);
+    return factor * v;
+  }
+
+  // --- board plumbing --------------------------------------------------------------------------
+  Box<Real> bounds() const override {
+    const Real r = radius();
+    return Box<Real>{p0_ - Vec2<Real>(r, r), p0_ + Vec2<Real>(r, r)};
+  }
+
+  GizmoSpec spec() const override { return GizmoSpec{}; }  // balls are BallSpec: see ballSpec()
+  BallSpec ballSpec(const Real& now) const {
+    const Vec2<Real> p = positionAt(now), v = velocityAt(now);
+    return BallSpec{this->name(), toDouble(p.x), toDouble(p.y), toDouble(v.x), toDouble(v.y), SourcePos{}};
+  }
+
+  std::vector<std::string> propertyNames() const override {
+    return {property::kName, property::kX, property::kY, property::kVx, property::kVy};
+  }
+  std::optional<PropertyValue> property(std::string_view name) const override {
+    if (name == property::kName) return PropertyValue(this->name());
+    if (name == property::kX) return PropertyValue(toDouble(p0_.x));
+    if (name == property::kY) return PropertyValue(toDouble(p0_.y));
+    if (name == property::kVx) return PropertyValue(toDouble(v0_.x));
+    if (name == property::kVy) return PropertyValue(toDouble(v0_.y));
+    return std::nullopt;
+  }
+  bool setPropertyUnchecked(std::string_view name, const PropertyValue& value) override {
+    if (name == property::kName) {
+      if (!std::holds_alternative<std::string>(value)) return false;
+      this->rename(std::get<std::string>(value));
+      return true;
+    }
+    const double* d = std::get_if<double>(&value);
+    if (!d) return false;
+    if (name == property::kX) p0_.x = fromDouble<Real>(*d);
+    else if (name == property::kY) p0_.y = fromDouble<Real>(*d);
+    else if (name == property::kVx) v0_.x = fromDouble<Real>(*d);
+    else if (name == property::kVy) v0_.y = fromDouble<Real>(*d);
+    else return false;
+    return true;
+  }
+
+ private:
+  Real t0_{0};
+  Vec2<Real> p0_, v0_, a_;
+  bool captured_ = false;
+  bool wedged_ = false;
+  std::optional<SurfaceContact<Real>> contact_;
+};
+
+}  // namespace gizmo

@@ -1,0 +1,217 @@
+#pragma once
+// Left and right flippers (physics.md §2): a capsule that swings a quarter turn about its
+// pivot in exactly 1/12 s when triggered, reverses at once when triggered mid-swing, and
+// adds its surface speed to the balls it strikes.
+#include <algorithm>
+
+#include "gizmo/core/geometry/flipper_time_of_impact.hpp"
+#include "gizmo/core/geometry/shapes.hpp"
+#include "gizmo/core/gizmos/grid_properties.hpp"
+#include "gizmo/core/gizmos/shape_collisions.hpp"
+
+namespace gizmo {
+
+template <class Real>
+class Flipper final : public AbstractGizmo<Real> {
+ public:
+  explicit Flipper(const GizmoSpec& spec) : AbstractGizmo<Real>(spec.name), spec_(spec) { layOut(); }
+
+  static Real swingTime() { return Real(1) / Real(12); }
+  static Real coefficient() { return fromDouble<Real>(0.95); }
+
+  GizmoKind kind() const override {
+    return spec_.type == GizmoType::LeftFlipper ? GizmoKind::LeftFlipper : GizmoKind::RightFlipper;
+  }
+
+  CollisionAnswer canCollideWith(const AbstractGizmo<Real>& other) const override {
+    return other.asBall() ? CollisionAnswer::CanCollide : CollisionAnswer::NeverCollides;
+  }
+
+  // --- swing state -----------------------------------------------------------------------------
+  // Progress s ∈ [0, 1/12] along the forward swing, anchored at t₀ and moving at `direction`
+  // (+1 forward, −1 back, 0 still).
+  Real progressAt(const Real& t) const { return s0_ + Real(direction_) * (t - t0_); }
+  int direction() const { return direction_; }
+  bool swinging() const { return direction_ != 0; }
+  bool blocked() const { return blocked_; }
+  // Angular velocity while swinging, rad/s (θ from +x toward +y).
+  Real omega() const { return Real(layout_.forwardSign * direction_) * Real(6) * piOf<Real>(); }
+  // The time the current swing ends (absolute); only while swinging.
+  Real stopTime() const { return t0_ + (direction_ > 0 ? swingTime() - s0_ : s0_); }
+
+  SwingingAxis<Real> axisAt(const Real& t) const {
+    SwingingAxis<Real> axis;
+    axis.pivot = pivot_;
+    axis.baseQuarter = layout_.restQuarter;
+    axis.phi0 = Real(layout_.forwardSign) * Real(6) * piOf<Real>() * progressAt(t);
+    axis.omega = omega();
+    axis.length = fromDouble<Real>(kFlipperLength);
+    axis.radius = fromDouble<Real>(kFlipperRadius);
+    return axis;
+  }
+
+  // Seed: fireTrigger. At rest: swing forward; at the end: swing back; mid-swing: reverse.
+  void fireTrigger(BoardAccess<Real>& board) override {
+    const Real& now = board.now();
+    const Real s = progressAt(now);
+    int next;
+    if (direction_ != 0) next = -direction_;
+    else if (s == Real(0)) next = +1;
+    else if (s == swingTime()) next = -1;
+    else next = -lastDirection_;  // blocked mid-swing: go back the way it came
+    board.releaseContactsOn(this->id());
+    anchor(now, s, next);
+    board.markForRecompute(this->id());
+  }
+
+  std::optional<Real> predictionHorizon() const override {
+    if (direction_ == 0) return std::nullopt;
+    return stopTime();
+  }
+
+  void scheduleOwnEvents(BoardAccess<Real>& board) override {
+    if (direction_ != 0) board.schedule(EventKind::FlipperStop, stopTime(), this->id(), kNoGizmo, -1);
+  }
+
+  void handleOwnEvent(const Event<Real>& event, BoardAccess<Real>& board) override {
+    if (event.kind != EventKind::FlipperStop || direction_ == 0) return;
+    anchor(board.now(), direction_ > 0 ? swingTime() : Real(0), 0);
+  }
+
+  // --- collisions ----------------------------------------------------------------------------
+  // Features: 0 and 1 the long sides, 2 the pivot end, 3 the tip end.
+  std::optional<Contact<Real>> timeUntilCollision(const AbstractGizmo<Real>& other, const Real& now, const Real& limit,
+                                                  const PhysicsParams<Real>&) const override {
+    const Ball<Real>* ball = other.asBall();
+    if (!ball || ball->captured()) return std::nullopt;
+    const Trajectory<Real> t = ball->trajectoryAt(now);
+    const Real r = Ball<Real>::radius();
+    if (direction_ == 0) {
+      const std::int32_t skip =
+          ball->contact() && ball->contact()->gizmo == this->id() ? ball->contact()->feature : std::int32_t{-1};
+      const std::optional<FeatureHit<Real>> hit = shapeTimeOfImpact(stillShape_, t, r, limit - now, skip);
+      if (!hit) return std::nullopt;
+      return Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
+    }
+    const Real horizon = minOf(Real(limit - now), Real(stopTime() - now));
+    std::optional<Contact<Real>> best;
+    // The pivot end does not move while the flipper turns.
+    const CircleFeature<Real> pivotEnd{pivot_, fromDouble<Real>(kFlipperRadius)};
+    if (const std::optional<Real> tau = circleTimeOfImpact(t, r, pivotEnd, horizon))
+      best = Contact<Real>{now + *tau, 2, EventKind::Collision};
+    const Real searchEnd = best ? Real(best->time - now) : horizon;
+    if (const auto hit = swingingCapsuleTimeOfImpact(t, r, axisAt(now), searchEnd))
+      if (!best || now + hit->tau < best->time) best = Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
+    return best;
+  }
+
+  void collide(AbstractGizmo<Real>& other, const Contact<Real>& contact, BoardAccess<Real>& board) override {
+    Ball<Real>* ball = other.asBall();
+    if (!ball) return;
+    if (direction_ == 0) {
+      bounceOffShape(stillShape_, this->id(), coefficient(), *ball, contact.feature, board);
+      return;
+    }
+    const Real& now = board.now();
+    const Vec2<Real> p = ball->positionAt(now);
+    const SwingingAxis<Real> axis = axisAt(now);
+    const Vec2<Real> u = axis.direction(Real(0));
+    Vec2<Real> n;
+    switch (contact.feature) {
+      case 0: n = Vec2<Real>(u.y, -u.x); break;
+      case 1: n = Vec2<Real>(-u.y, u.x); break;
+      default: {
+        const Vec2<Real> centre = contact.feature == 2 ? pivot_ : pivot_ + axis.length * u;
+        const Vec2<Real> d = p - centre;
+        const Real dist = length(d);
+        if (dist == Real(0)) return;
+        n = Vec2<Real>(d.x / dist, d.y / dist);
+      }
+    }
+    // The surface point under the ball moves at ω × r about the pivot.
+    const Vec2<Real> touch = p - Ball<Real>::radius() * n - pivot_;
+    const Vec2<Real> surfaceVelocity = axis.omega * Vec2<Real>(-touch.y, touch.x);
+    ball->reflect(n, coefficient(), surfaceVelocity, SurfaceType::Round, nullptr, board);
+    countHit(ball->id(), board);
+  }
+
+  Box<Real> bounds() const override {
+    const Vec2<Real> o(Real(spec_.x), Real(spec_.y));
+    return Box<Real>{o, o + Vec2<Real>(Real(2), Real(2))};
+  }
+
+  GizmoSpec spec() const override {
+    GizmoSpec s = spec_;
+    s.name = this->name();
+    return s;
+  }
+  std::vector<std::string> propertyNames() const override { return gridPropertyNames(spec_); }
+  std::optional<PropertyValue> property(std::string_view name) const override { return gridProperty(spec(), name); }
+  bool setPropertyUnchecked(std::string_view name, const PropertyValue& value) override {
+    GizmoSpec s = spec();
+    if (!setGridProperty(s, name, value)) return false;
+    spec_ = s;
+    this->rename(s.name);
+    layOut();
+    return true;
+  }
+
+  const Shape<Real>& stillShape() const { return stillShape_; }
+
+ private:
+  void layOut() {
+    layout_ = flipperLayout(spec_.type, spec_.orientation);
+    pivot_ = Vec2<Real>(Real(spec_.x), Real(spec_.y)) + toReal<Real>(layout_.pivot);
+    anchor(t0_, Real(0), 0);
+  }
+
+  void anchor(const Real& t, const Real& s, int direction) {
+    t0_ = t;
+    s0_ = s;
+    if (direction_ != 0) lastDirection_ = direction_;
+    direction_ = direction;
+    blocked_ = false;
+    hits_.clear();
+    if (direction_ == 0) stillShape_ = shapeAt(s0_);
+  }
+
+  // The capsule at progress s: exact quarter turns at rest and at the end.
+  Shape<Real> shapeAt(const Real& s) const {
+    Vec2<Real> u;
+    if (s == Real(0)) u = quarterDirection<Real>(layout_.restQuarter);
+    else if (s == swingTime()) u = quarterDirection<Real>(layout_.endQuarter);
+    else {
+      SwingingAxis<Real> axis = axisAt(t0_);
+      axis.phi0 = Real(layout_.forwardSign) * Real(6) * piOf<Real>() * s;
+      u = axis.direction(Real(0));
+    }
+    Shape<Real> shape;
+    addCapsule(shape, pivot_, Vec2<Real>(pivot_ + fromDouble<Real>(kFlipperLength) * u), fromDouble<Real>(kFlipperRadius));
+    return shape;
+  }
+
+  // A ball struck again and again in one swing is pinched against something: the flipper
+  // stops where it is instead of pushing through it (docs/physics.md, the pinch rule).
+  void countHit(GizmoId ball, BoardAccess<Real>& board) {
+    auto it = std::find_if(hits_.begin(), hits_.end(), [&](const auto& h) { return h.first == ball; });
+    if (it == hits_.end()) it = hits_.insert(hits_.end(), {ball, 0});
+    if (++it->second <= board.params().pinchLimit) return;
+    const Real& now = board.now();
+    anchor(now, progressAt(now), 0);
+    blocked_ = true;
+    board.reportRule(ModelRule::FlipperBlocked, this->id(), ball);
+    board.markForRecompute(this->id());
+  }
+
+  GizmoSpec spec_;
+  FlipperLayout layout_{};
+  Vec2<Real> pivot_;
+  Real t0_{0}, s0_{0};
+  int direction_ = 0;
+  int lastDirection_ = 1;
+  bool blocked_ = false;
+  std::vector<std::pair<GizmoId, int>> hits_;
+  Shape<Real> stillShape_;
+};
+
+}  // namespace gizmo

@@ -1,0 +1,103 @@
+#pragma once
+// The seed's AbstractGizmoWithPolygonalGeometry: a fixed shape whose edges and vertices (and,
+// for the circle bumper, one round feature) meet the ball. Squares, triangles, circles,
+// absorbers and the outer walls share all of it; the absorber overrides only the response.
+#include "gizmo/core/geometry/shapes.hpp"
+#include "gizmo/core/gizmos/grid_properties.hpp"
+#include "gizmo/core/gizmos/shape_collisions.hpp"
+
+namespace gizmo {
+
+template <class Real>
+class AbstractGizmoWithPolygonalGeometry : public AbstractGizmo<Real> {
+ public:
+  CollisionAnswer canCollideWith(const AbstractGizmo<Real>& other) const override {
+    return other.asBall() ? CollisionAnswer::CanCollide : CollisionAnswer::NeverCollides;
+  }
+
+  std::optional<Contact<Real>> timeUntilCollision(const AbstractGizmo<Real>& other, const Real& now, const Real& limit,
+                                                  const PhysicsParams<Real>&) const override {
+    const Ball<Real>* ball = other.asBall();
+    if (!ball || ball->captured()) return std::nullopt;
+    const std::int32_t skip =
+        ball->contact() && ball->contact()->gizmo == this->id() ? ball->contact()->feature : std::int32_t{-1};
+    const std::optional<FeatureHit<Real>> hit =
+        shapeTimeOfImpact(shape_, ball->trajectoryAt(now), Ball<Real>::radius(), limit - now, skip);
+    if (!hit) return std::nullopt;
+    return Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
+  }
+
+  void collide(AbstractGizmo<Real>& other, const Contact<Real>& contact, BoardAccess<Real>& board) override {
+    if (Ball<Real>* ball = other.asBall()) respond(*ball, contact, board);
+  }
+
+  Box<Real> bounds() const override { return bounds_; }
+  const Shape<Real>& shape() const { return shape_; }
+  const Real& coefficient() const { return coefficient_; }
+
+ protected:
+  AbstractGizmoWithPolygonalGeometry(std::string name, Shape<Real> shape, const Real& coefficient)
+      : AbstractGizmo<Real>(std::move(name)), coefficient_(coefficient) {
+    setShape(std::move(shape));
+  }
+
+  void setShape(Shape<Real> shape) {
+    shape_ = std::move(shape);
+    bounds_ = shapeBounds(shape_);
+  }
+
+  // The reflection; the absorber captures instead.
+  virtual void respond(Ball<Real>& ball, const Contact<Real>& contact, BoardAccess<Real>& board) {
+    bounceOffShape(shape_, this->id(), coefficient_, ball, contact.feature, board);
+  }
+
+ private:
+  Shape<Real> shape_;
+  Box<Real> bounds_;
+  Real coefficient_;
+};
+
+// A polygonal gizmo that stands on the grid and is described by a GizmoSpec.
+template <class Real>
+class GridBumper : public AbstractGizmoWithPolygonalGeometry<Real> {
+ public:
+  explicit GridBumper(const GizmoSpec& spec)
+      : AbstractGizmoWithPolygonalGeometry<Real>(spec.name, restShape<Real>(spec), Real(1)), spec_(spec) {}
+
+  GizmoKind kind() const override {
+    switch (spec_.type) {
+      case GizmoType::Square: return GizmoKind::Square;
+      case GizmoType::Circle: return GizmoKind::Circle;
+      case GizmoType::Triangle: return GizmoKind::Triangle;
+      default: return GizmoKind::Absorber;
+    }
+  }
+  GizmoSpec spec() const override {
+    GizmoSpec s = spec_;
+    s.name = this->name();
+    return s;
+  }
+  std::vector<std::string> propertyNames() const override { return gridPropertyNames(spec_); }
+  std::optional<PropertyValue> property(std::string_view name) const override { return gridProperty(spec(), name); }
+  bool setPropertyUnchecked(std::string_view name, const PropertyValue& value) override {
+    GizmoSpec s = spec();
+    if (!setGridProperty(s, name, value)) return false;
+    spec_ = s;
+    this->rename(s.name);
+    this->setShape(restShape<Real>(spec_));
+    return true;
+  }
+
+ private:
+  GizmoSpec spec_;
+};
+
+// Square, circle and triangle bumpers: coefficient 1, a trigger, no action.
+template <class Real>
+using SquareBumper = GridBumper<Real>;
+template <class Real>
+using CircleBumper = GridBumper<Real>;
+template <class Real>
+using TriangleBumper = GridBumper<Real>;
+
+}  // namespace gizmo

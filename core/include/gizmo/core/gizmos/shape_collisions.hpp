@@ -1,0 +1,84 @@
+#pragma once
+// Ball against a fixed shape (segments and circles): the first contact over all features, and
+// the normal at a contact. Polygonal bumpers, absorbers, the walls, circle bumpers and a
+// flipper at rest all use these.
+#include <optional>
+
+#include "gizmo/core/geometry/time_of_impact.hpp"
+#include "gizmo/core/gizmos/ball.hpp"
+
+namespace gizmo {
+
+template <class Real>
+struct FeatureHit {
+  Real tau;
+  std::int32_t feature;  // segments first, then circles
+};
+
+// skipFeature: the segment a ball slides on is no obstacle to it.
+template <class Real>
+std::optional<FeatureHit<Real>> shapeTimeOfImpact(const Shape<Real>& shape, const Trajectory<Real>& t, const Real& r,
+                                                  const Real& limit, std::int32_t skipFeature) {
+  std::optional<FeatureHit<Real>> best;
+  auto consider = [&](const std::optional<Real>& tau, std::int32_t feature) {
+    if (tau && (!best || *tau < best->tau)) best = FeatureHit<Real>{*tau, feature};
+  };
+  std::int32_t f = 0;
+  for (const SegmentFeature<Real>& s : shape.segments) {
+    if (f != skipFeature) consider(segmentTimeOfImpact(t, r, s, best ? best->tau : limit), f);
+    ++f;
+  }
+  for (const CircleFeature<Real>& c : shape.circles) {
+    consider(circleTimeOfImpact(t, r, c, best ? best->tau : limit), f);
+    ++f;
+  }
+  return best;
+}
+
+// The unit normal from the feature towards the ball at ball centre p; nullopt when p sits on a
+// circle's centre (no direction to push along).
+template <class Real>
+std::optional<Vec2<Real>> shapeNormal(const Shape<Real>& shape, std::int32_t feature, const Vec2<Real>& p) {
+  const std::size_t f = static_cast<std::size_t>(feature);
+  if (f < shape.segments.size()) return shape.segments[f].normal;
+  const CircleFeature<Real>& c = shape.circles.at(f - shape.segments.size());
+  const Vec2<Real> d = p - c.centre;
+  const Real dist = length(d);
+  if (dist == Real(0)) return std::nullopt;
+  return Vec2<Real>(d.x / dist, d.y / dist);
+}
+
+// The fixed-shape response: reflect with coefficient c; a slow ball pressed onto a segment
+// starts sliding on it.
+template <class Real>
+void bounceOffShape(const Shape<Real>& shape, GizmoId owner, const Real& coefficient, Ball<Real>& ball,
+                    std::int32_t feature, BoardAccess<Real>& board) {
+  const std::optional<Vec2<Real>> n = shapeNormal(shape, feature, ball.positionAt(board.now()));
+  if (!n) return;
+  const std::size_t f = static_cast<std::size_t>(feature);
+  if (f < shape.segments.size()) {
+    const SurfaceContact<Real> surface{owner, feature, shape.segments[f], coefficient};
+    ball.reflect(*n, coefficient, Vec2<Real>(), SurfaceType::StaticSegment, &surface, board);
+  } else {
+    ball.reflect(*n, coefficient, Vec2<Real>(), SurfaceType::Round, nullptr, board);
+  }
+}
+
+template <class Real>
+Box<Real> shapeBounds(const Shape<Real>& shape) {
+  Box<Real> b{Vec2<Real>(Real(1e30), Real(1e30)), Vec2<Real>(Real(-1e30), Real(-1e30))};
+  auto add = [&](const Vec2<Real>& p, const Real& r) {
+    b.lo.x = minOf(b.lo.x, Real(p.x - r));
+    b.lo.y = minOf(b.lo.y, Real(p.y - r));
+    b.hi.x = maxOf(b.hi.x, Real(p.x + r));
+    b.hi.y = maxOf(b.hi.y, Real(p.y + r));
+  };
+  for (const auto& s : shape.segments) {
+    add(s.a, Real(0));
+    add(s.b, Real(0));
+  }
+  for (const auto& c : shape.circles) add(c.centre, c.radius);
+  return b;
+}
+
+}  // namespace gizmo
