@@ -130,7 +130,7 @@ class GameBoard final : private BoardAccess<Real> {
   // Built once per board change.
   bool built_ = false;
   std::vector<std::int32_t> ballIndex_;        // gizmo id → index into balls_, or −1
-  std::vector<PairRole> roles_;                // balls × gizmos: the ball's role in the pair
+  std::vector<GizmoId> colliders_;             // balls × gizmos: the pair's collider, or none
   std::array<std::vector<GizmoId>, 400> grid_; // 1 L cells → fixed gizmos that reach into them
   std::vector<Box<Real>> boxes_;               // per gizmo: where it can be until validUntil_
   std::vector<Real> validUntil_;               // per gizmo: its predictions hold until then

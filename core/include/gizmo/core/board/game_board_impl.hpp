@@ -107,10 +107,16 @@ void GameBoard<Real>::rebuild() {
   const std::size_t n = gizmos_.size();
   ballIndex_.assign(n, -1);
   for (std::size_t i = 0; i < balls_.size(); ++i) ballIndex_[static_cast<std::size_t>(balls_[i])] = std::int32_t(i);
-  roles_.assign(balls_.size() * n, PairRole::None);
+  // Each pair's collider is fixed: asked in id order, the first gizmo that can collide.
+  colliders_.assign(balls_.size() * n, kNoGizmo);
   for (std::size_t i = 0; i < balls_.size(); ++i)
-    for (std::size_t g = 0; g < n; ++g)
-      if (GizmoId(g) != balls_[i]) roles_[i * n + g] = formPair(*gizmos_[static_cast<std::size_t>(balls_[i])], *gizmos_[g]);
+    for (std::size_t g = 0; g < n; ++g) {
+      const std::size_t b = static_cast<std::size_t>(balls_[i]);
+      if (g == b) continue;
+      const std::size_t lo = std::min(g, b), hi = std::max(g, b);
+      const PairRole r = formPair(*gizmos_[lo], *gizmos_[hi]);
+      if (r != PairRole::None) colliders_[i * n + g] = GizmoId(r == PairRole::FirstCollides ? lo : hi);
+    }
   for (auto& cell : grid_) cell.clear();
   for (std::size_t g = 1; g < n; ++g) {  // the walls (id 0) are checked for every ball instead
     if (gizmos_[g]->asBall()) continue;
@@ -415,12 +421,11 @@ void GameBoard<Real>::gatherCandidates(GizmoId ballId, std::vector<GizmoId>& out
 template <class Real>
 void GameBoard<Real>::computePair(GizmoId ballId, GizmoId other) {
   const std::size_t n = gizmos_.size();
-  const PairRole role = roles_[std::size_t(ballIndex_[std::size_t(ballId)]) * n + std::size_t(other)];
-  if (role == PairRole::None) return;
+  const GizmoId collider = colliders_[std::size_t(ballIndex_[std::size_t(ballId)]) * n + std::size_t(other)];
+  if (collider == kNoGizmo) return;
   const Real limit = minOf(validUntil_[std::size_t(ballId)], validUntil_[std::size_t(other)]);
   if (!(limit < infinity())) return;  // neither side can move: nothing to predict
-  const GizmoId collider = role == PairRole::FirstCollides ? ballId : other;
-  const GizmoId collidee = role == PairRole::FirstCollides ? other : ballId;
+  const GizmoId collidee = collider == ballId ? other : ballId;
   const std::optional<Contact<Real>> c =
       gizmos_[std::size_t(collider)]->timeUntilCollision(*gizmos_[std::size_t(collidee)], now_, limit, params_);
   if (c) schedule(c->kind, c->time, collider, collidee, c->feature);

@@ -122,7 +122,8 @@ class Ball final : public AbstractGizmo<Real> {
     if (dist == Real(0)) return;  // coincident centres: no normal to push along
     const Vec2<Real> n(d.x / dist, d.y / dist);
     const Real closing = dot(va - vb, n);
-    if (!(closing < Real(0))) return;
+    // Touching without closing speed, but accelerating together (one ball supported): a slow hit.
+    if (Real(0) < closing || (closing == Real(0) && !(dot(a_ - b->acceleration(), n) < Real(0)))) return;
     Real exchange = -closing;  // added to a along n, taken from b
     const bool supported = contact_ || wedged_ || b->contact() || b->wedged();
     if (supported && params.gravity != Real(0) && -closing < params.restSpeed) {
@@ -144,7 +145,9 @@ class Ball final : public AbstractGizmo<Real> {
     const Vec2<Real> p = positionAt(now);
     Vec2<Real> v = velocityAt(now);
     const Real closing = dot(v - u, n);
-    if (!(closing < Real(0))) return false;
+    // Touching without closing speed but accelerating into the surface counts as a slow hit:
+    // that is how a ball at rest on a floor comes to lie on it.
+    if (Real(0) < closing || (closing == Real(0) && !(dot(a_, n) < Real(0)))) return false;
     const Vec2<Real> g(Real(0), params.gravity);
     const bool pressed = dot(g, n) < Real(0);
     if (pressed && -closing < params.restSpeed) {

@@ -1,0 +1,99 @@
+#include "run_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "board_input.hpp"
+#include "gizmo/core/math/precision.hpp"
+#include "gizmo/io/diagnostics.hpp"
+
+namespace gizmo::cli {
+namespace {
+
+std::optional<MotionModel> parseModel(const std::string& name) {
+  if (name == "ballistic") return MotionModel::Ballistic;
+  if (name == "classic") return MotionModel::Classic;
+  return std::nullopt;
+}
+
+void printHuman(const std::string& board, const RunOptions& o, const RunSummary& s, double wall) {
+  std::printf("board      %s\n", board.c_str());
+  std::printf("model      %s\nprecision  %s\ntime       %.17g s\n", o.model.c_str(), o.precision.c_str(), s.time);
+  std::printf("events     %llu\n", static_cast<unsigned long long>(s.total));
+  for (int k = 0; k < kEventKindCount; ++k)
+    std::printf("  %-14s %llu\n", std::string(eventKindName(EventKind(k))).c_str(),
+                static_cast<unsigned long long>(s.executed[std::size_t(k)]));
+  std::printf("balls      %zu\n", s.balls.size());
+  for (const BallState& b : s.balls)
+    std::printf("  %-12s x=%-22.17g y=%-22.17g vx=%-22.17g vy=%-22.17g%s\n", b.name.c_str(), b.x, b.y, b.vx, b.vy,
+                b.captured ? " captured" : "");
+  std::printf("energy     %.17g (per unit mass, free balls)\n", s.energy);
+  std::printf("wall       %.6f s\n", wall);
+}
+
+void printJson(const RunOptions& o, const RunSummary& s, double wall) {
+  nlohmann::ordered_json events;
+  for (int k = 0; k < kEventKindCount; ++k) events[std::string(eventKindName(EventKind(k)))] = s.executed[std::size_t(k)];
+  events["total"] = s.total;
+  nlohmann::ordered_json balls = nlohmann::ordered_json::array();
+  for (const BallState& b : s.balls)
+    balls.push_back({{"name", b.name}, {"x", b.x}, {"y", b.y}, {"vx", b.vx}, {"vy", b.vy}, {"captured", b.captured}});
+  nlohmann::ordered_json out{{"model", o.model}, {"precision", o.precision}, {"time", s.time}, {"events", events},
+                             {"balls", balls},   {"energy", s.energy},       {"wall_seconds", wall}};
+  std::cout << out.dump(2) << '\n';
+}
+
+}  // namespace
+
+int runCommand(const RunOptions& o) {
+  const std::optional<MotionModel> model = parseModel(o.model);
+  if (!model) {
+    std::cerr << "gizmo run: unknown model '" << o.model << "' (ballistic or classic)\n";
+    return kExitBadInput;
+  }
+  const std::optional<PrecisionChoice> precision = parsePrecision(o.precision);
+  if (!precision) {
+    std::cerr << "gizmo run: unknown precision '" << o.precision << "' (" << kPrecisionNames << ")\n";
+    return kExitBadInput;
+  }
+  if (!(o.time >= 0) || !std::isfinite(o.time) || o.time > 1e7) {
+    std::cerr << "gizmo run: --time must be a number of seconds from 0 to 1e7\n";
+    return kExitBadInput;
+  }
+  if (!(o.maxTick > 0) || !std::isfinite(o.maxTick) || o.maxTick > 10) {
+    std::cerr << "gizmo run: --max-tick must be a number of seconds above 0 and at most 10\n";
+    return kExitBadInput;
+  }
+  RunRequest request;
+  std::string boardName;
+  try {
+    LoadedBoard board = loadBoard(o.board);
+    request.board = std::move(board.spec);
+    boardName = board.name;
+    request.keys = loadKeys(o.keys);
+  } catch (const io::InputError& e) {
+    std::cerr << e.what() << '\n';
+    return kExitBadInput;
+  }
+  request.model = *model;
+  request.maxTick = o.maxTick;
+  request.duration = o.time;
+
+  const auto start = std::chrono::steady_clock::now();
+  RunSummary summary;
+  try {
+    summary = withPrecision(*precision, [&]<class Real>() { return simulate<Real>(request); });
+  } catch (const StallError& e) {
+    std::cerr << "gizmo run: the simulation stalled: " << e.what() << '\n';
+    return kExitCheckFailed;
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (o.json) printJson(o, summary, wall);
+  else printHuman(boardName, o, summary, wall);
+  return kExitOk;
+}
+
+}  // namespace gizmo::cli

@@ -1,0 +1,76 @@
+#pragma once
+// A run as data (architecture.md, seam 4): a board, a motion model, a scalar, timed key input,
+// and how long to simulate. The same function serves the command line, the tests and the
+// benchmarks.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "gizmo/core/board/build_board.hpp"
+
+namespace gizmo {
+
+struct TimedKey {
+  double time = 0;
+  int key = 0;
+  KeyDirection direction = KeyDirection::Down;
+};
+
+struct RunRequest {
+  BoardSpec board;
+  MotionModel model = MotionModel::Ballistic;
+  double maxTick = 0.05;
+  double duration = 10.0;
+  std::vector<TimedKey> keys;
+};
+
+struct BallState {
+  std::string name;
+  double x = 0, y = 0, vx = 0, vy = 0;
+  bool captured = false;
+};
+
+struct RunSummary {
+  double time = 0;
+  std::array<std::uint64_t, kEventKindCount> executed{};
+  std::uint64_t total = 0;
+  double energy = 0;
+  std::vector<BallState> balls;
+};
+
+template <class Real>
+PhysicsParams<Real> paramsFor(const RunRequest& request) {
+  PhysicsParams<Real> p;
+  p.model = request.model;
+  p.maxTick = fromDouble<Real>(request.maxTick);
+  return p;
+}
+
+template <class Real>
+RunSummary summarize(const GameBoard<Real>& board) {
+  RunSummary s;
+  s.time = toDouble(board.now());
+  s.executed = board.executedCounts();
+  s.total = board.executedTotal();
+  s.energy = toDouble(board.energy());
+  for (GizmoId id : board.ballIds()) {
+    const Ball<Real>& b = *board.gizmo(id).asBall();
+    const Vec2<Real> p = b.positionAt(board.now()), v = b.velocityAt(board.now());
+    s.balls.push_back(BallState{b.name(), toDouble(p.x), toDouble(p.y), toDouble(v.x), toDouble(v.y), b.captured()});
+  }
+  return s;
+}
+
+// Builds the board, schedules the keys, simulates request.duration seconds (one tick call of
+// the whole duration; the board splits it) and summarizes. The observer, if any, sees it all.
+template <class Real>
+RunSummary simulate(const RunRequest& request, BoardObserver<Real>* observer = nullptr) {
+  std::unique_ptr<GameBoard<Real>> board = buildBoard<Real>(request.board, paramsFor<Real>(request));
+  board->setObserver(observer);
+  for (const TimedKey& k : request.keys)
+    if (k.time <= request.duration) board->scheduleInput(fromDouble<Real>(k.time), k.key, k.direction);
+  board->tick(fromDouble<Real>(request.duration));
+  return summarize(*board);
+}
+
+}  // namespace gizmo

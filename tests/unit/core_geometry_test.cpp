@@ -1,0 +1,237 @@
+// Geometry of every gizmo kind in every orientation, and the time of impact against each
+// kind of feature, checked against values worked out by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gizmo/core/geometry/flipper_time_of_impact.hpp"
+#include "gizmo/core/geometry/shapes.hpp"
+#include "gizmo/core/geometry/time_of_impact.hpp"
+#include "support/board_builder.hpp"
+
+namespace gizmo {
+namespace {
+
+using test::gizmoAt;
+
+bool hasVertex(const Shape<double>& s, double x, double y) {
+  for (const auto& c : s.circles)
+    if (c.radius == 0 && c.centre.x == x && c.centre.y == y) return true;
+  return false;
+}
+
+TEST(Shapes, SquareHasFourOutwardEdgesAndFourCorners) {
+  const Shape<double> s = restShape<double>(gizmoAt(GizmoType::Square, "S", 3, 4));
+  ASSERT_EQ(s.segments.size(), 4u);
+  ASSERT_EQ(s.circles.size(), 4u);
+  for (const auto& seg : s.segments) {
+    // The centre of the square lies behind every edge.
+    const Vec2<double> centre(3.5, 4.5);
+    EXPECT_LT(dot(centre - seg.a, seg.normal), 0.0);
+    EXPECT_EQ(seg.length, 1.0);
+  }
+  EXPECT_TRUE(hasVertex(s, 3, 4) && hasVertex(s, 4, 4) && hasVertex(s, 4, 5) && hasVertex(s, 3, 5));
+}
+
+// physics.md §2: orientation 0 has its right angle at NW, 90 at NE, 180 at SE, 270 at SW.
+TEST(Shapes, TriangleRightAngleTurnsClockwise) {
+  const struct {
+    int orientation;
+    double cornerX, cornerY;
+  } cases[] = {{0, 0, 0}, {90, 1, 0}, {180, 1, 1}, {270, 0, 1}};
+  for (const auto& c : cases) {
+    const Shape<double> s = restShape<double>(gizmoAt(GizmoType::Triangle, "T", 10, 10, c.orientation));
+    ASSERT_EQ(s.segments.size(), 3u);
+    ASSERT_EQ(s.circles.size(), 3u);
+    // The right-angle corner: the vertex whose two edges are axis-aligned and meet at 90°.
+    EXPECT_TRUE(hasVertex(s, 10 + c.cornerX, 10 + c.cornerY)) << c.orientation;
+    // The opposite corner of the cell is not a vertex.
+    EXPECT_FALSE(hasVertex(s, 10 + 1 - c.cornerX, 10 + 1 - c.cornerY)) << c.orientation;
+    int diagonal = 0;
+    const Vec2<double> centroidish(10.5, 10.5);
+    for (const auto& seg : s.segments) {
+      if (seg.normal.x != 0 && seg.normal.y != 0) {
+        ++diagonal;
+        EXPECT_NEAR(seg.length, std::sqrt(2.0), 1e-15);
+        // The hypotenuse faces away from the right angle.
+        const Vec2<double> corner(10 + c.cornerX, 10 + c.cornerY);
+        EXPECT_LT(dot(corner - seg.a, seg.normal), 0.0);
+      }
+    }
+    EXPECT_EQ(diagonal, 1) << c.orientation;
+  }
+}
+
+TEST(Shapes, CircleBumperIsOneCircle) {
+  const Shape<double> s = restShape<double>(gizmoAt(GizmoType::Circle, "C", 4, 3));
+  ASSERT_EQ(s.circles.size(), 1u);
+  EXPECT_TRUE(s.segments.empty());
+  EXPECT_EQ(s.circles[0].centre, Vec2<double>(4.5, 3.5));
+  EXPECT_EQ(s.circles[0].radius, 0.5);
+}
+
+TEST(Shapes, AbsorberSpansItsRectangle) {
+  const Shape<double> s = restShape<double>(gizmoAt(GizmoType::Absorber, "A", 0, 19, 0, 20, 1));
+  EXPECT_TRUE(hasVertex(s, 0, 19) && hasVertex(s, 20, 19) && hasVertex(s, 20, 20) && hasVertex(s, 0, 20));
+}
+
+// physics.md §2: pivots and angles of both flippers in all four orientations.
+TEST(Shapes, FlipperLayoutsInAllOrientations) {
+  const struct {
+    GizmoType type;
+    int orientation;
+    double px, py;
+    int rest, end, sign;
+  } cases[] = {
+      {GizmoType::LeftFlipper, 0, 0.25, 0.25, 1, 0, -1},  {GizmoType::LeftFlipper, 90, 1.75, 0.25, 2, 1, -1},
+      {GizmoType::LeftFlipper, 180, 1.75, 1.75, 3, 2, -1}, {GizmoType::LeftFlipper, 270, 0.25, 1.75, 4, 3, -1},
+      {GizmoType::RightFlipper, 0, 1.75, 0.25, 1, 2, 1},   {GizmoType::RightFlipper, 90, 1.75, 1.75, 2, 3, 1},
+      {GizmoType::RightFlipper, 180, 0.25, 1.75, 3, 4, 1}, {GizmoType::RightFlipper, 270, 0.25, 0.25, 4, 5, 1},
+  };
+  for (const auto& c : cases) {
+    const FlipperLayout f = flipperLayout(c.type, c.orientation);
+    EXPECT_EQ(f.pivot, Vec2<double>(c.px, c.py)) << c.orientation;
+    EXPECT_EQ(f.restQuarter, c.rest);
+    EXPECT_EQ(f.endQuarter, c.end);
+    EXPECT_EQ(f.forwardSign, c.sign);
+    // At rest and at the end the capsule stays inside its 2×2 box.
+    for (int q : {f.restQuarter, f.endQuarter}) {
+      const Vec2<double> tip = f.pivot + kFlipperLength * quarterDirection<double>(q);
+      for (const Vec2<double>& p : {f.pivot, tip}) {
+        EXPECT_GE(p.x - kFlipperRadius, 0.0);
+        EXPECT_LE(p.x + kFlipperRadius, 2.0);
+        EXPECT_GE(p.y - kFlipperRadius, 0.0);
+        EXPECT_LE(p.y + kFlipperRadius, 2.0);
+      }
+    }
+  }
+}
+
+TEST(Shapes, OuterWallNormalsPointIntoTheBoard) {
+  const Shape<double> s = outerWallsShape<double>();
+  ASSERT_EQ(s.segments.size(), 4u);
+  EXPECT_TRUE(s.circles.empty());
+  for (const auto& seg : s.segments) EXPECT_GT(dot(Vec2<double>(10, 10) - seg.a, seg.normal), 0.0);
+}
+
+// --- times of impact --------------------------------------------------------------------------
+
+TEST(TimeOfImpact, SegmentHeadOnStraightLine) {
+  // Walking left to right along y = 20, the free side is above: normal (d.y, −d.x) = (0, −1).
+  const SegmentFeature<double> floor = makeSegment(Vec2<double>(0, 20), Vec2<double>(20, 20));
+  ASSERT_EQ(floor.normal, Vec2<double>(0, -1));
+  const Trajectory<double> t{{10, 10}, {0, 5}, {0, 0}};
+  const auto tau = segmentTimeOfImpact(t, 0.25, floor, 10.0);
+  ASSERT_TRUE(tau);
+  EXPECT_DOUBLE_EQ(*tau, (19.75 - 10) / 5);
+}
+
+TEST(TimeOfImpact, SegmentUnderGravityIsTheQuadraticRoot) {
+  const SegmentFeature<double> floor = makeSegment(Vec2<double>(0, 20), Vec2<double>(20, 20));
+  const Trajectory<double> t{{1, 11}, {0, 0}, {0, 25}};
+  const auto tau = segmentTimeOfImpact(t, 0.25, floor, 10.0);
+  ASSERT_TRUE(tau);
+  EXPECT_NEAR(*tau, std::sqrt(2 * 8.75 / 25), 1e-15);
+}
+
+TEST(TimeOfImpact, SegmentMissesBeyondItsEndsAndFromBehind) {
+  const SegmentFeature<double> top = makeSegment(Vec2<double>(5, 5), Vec2<double>(6, 5));  // normal (0,−1)
+  // Passing beside the segment: the contact point would lie off it.
+  EXPECT_FALSE(segmentTimeOfImpact(Trajectory<double>{{7, 2}, {0, 5}, {0, 0}}, 0.25, top, 10.0));
+  // Coming from behind (below): the other side's edges handle that.
+  EXPECT_FALSE(segmentTimeOfImpact(Trajectory<double>{{5.5, 8}, {0, -5}, {0, 0}}, 0.25, top, 10.0));
+  // Receding while touching: no collision (physics.md §5).
+  EXPECT_FALSE(segmentTimeOfImpact(Trajectory<double>{{5.5, 4.75}, {0, -1}, {0, 0}}, 0.25, top, 10.0));
+  // Touching and approaching: now.
+  const auto now = segmentTimeOfImpact(Trajectory<double>{{5.5, 4.75}, {0, 1}, {0, 0}}, 0.25, top, 10.0);
+  ASSERT_TRUE(now);
+  EXPECT_EQ(*now, 0.0);
+}
+
+TEST(TimeOfImpact, BallAtRestOnAFloorThatGravityPressesIsInContactNow) {
+  const SegmentFeature<double> floor = makeSegment(Vec2<double>(0, 20), Vec2<double>(20, 20));
+  const auto tau = segmentTimeOfImpact(Trajectory<double>{{3, 19.75}, {0, 0}, {0, 25}}, 0.25, floor, 1.0);
+  ASSERT_TRUE(tau);
+  EXPECT_EQ(*tau, 0.0);
+}
+
+TEST(TimeOfImpact, VertexHitAtFortyFiveDegrees) {
+  // Aimed along the diagonal at the corner (5,5): contact when the centre is 0.25 from it.
+  const CircleFeature<double> corner{{5, 5}, 0};
+  const Trajectory<double> t{{2, 2}, {1, 1}, {0, 0}};
+  const auto tau = circleTimeOfImpact(t, 0.25, corner, 10.0);
+  ASSERT_TRUE(tau);
+  EXPECT_NEAR(*tau, 3 - 0.25 / std::sqrt(2.0), 1e-14);
+}
+
+TEST(TimeOfImpact, CircleUnderGravityMatchesAQuarticRootFoundIndependently) {
+  // A ball dropped beside a circle bumper's top: solve |p(t) − c| = 0.75 by bisection on a
+  // fine grid here, independently of the library's root finder.
+  const CircleFeature<double> c{{4.5, 3.5}, 0.5};
+  const Trajectory<double> t{{4.9, 0.5}, {0.3, 0}, {0, 25}};
+  auto gap = [&](double tau) { return length(t.positionAt(tau) - c.centre) - 0.75; };
+  double lo = 0, hi = 0;
+  for (double x = 0; x < 1; x += 1e-4)
+    if (gap(x) > 0 && gap(x + 1e-4) <= 0) {
+      lo = x;
+      hi = x + 1e-4;
+      break;
+    }
+  ASSERT_GT(hi, 0.0);
+  for (int i = 0; i < 200; ++i) {
+    const double m = (lo + hi) / 2;
+    (gap(m) > 0 ? lo : hi) = m;
+  }
+  const auto tau = circleTimeOfImpact(t, 0.25, c, 1.0);
+  ASSERT_TRUE(tau);
+  EXPECT_NEAR(*tau, lo, 1e-12);
+}
+
+TEST(TimeOfImpact, TwoBallsHeadOn) {
+  const Trajectory<double> a{{5, 10}, {2, 0}, {0, 25}}, b{{15, 10}, {-2, 0}, {0, 25}};
+  const auto tau = ballTimeOfImpact(a, b, 0.25, 10.0);
+  ASSERT_TRUE(tau);
+  EXPECT_DOUBLE_EQ(*tau, 9.5 / 4);
+}
+
+TEST(TimeOfImpact, SwingingFlipperStrikesABallAtRestOnItsPath) {
+  // Left flipper at (0,0): pivot (0.25,0.25), rest pointing down, swinging towards east at
+  // ω = −6π. A ball at rest at angle θ = π/4 from the pivot, 1 L out, beside the bar's side:
+  // the side facing it reaches the ball when the axis is 0.5/1 rad short of π/4 (sin⁻¹ 0.5).
+  SwingingAxis<double> axis;
+  axis.pivot = Vec2<double>(0.25, 0.25);
+  axis.baseQuarter = 1;
+  axis.phi0 = 0;
+  axis.omega = -6 * M_PI;
+  axis.length = 1.5;
+  axis.radius = 0.25;
+  const double theta = M_PI / 4;
+  const Trajectory<double> ball{{0.25 + std::cos(theta), 0.25 + std::sin(theta)}, {0, 0}, {0, 0}};
+  const auto hit = swingingCapsuleTimeOfImpact(ball, 0.25, axis, 1.0 / 12);
+  ASSERT_TRUE(hit);
+  // The side touches when the perpendicular distance is 0.5: θ_axis = π/4 + asin(0.5).
+  const double expected = (M_PI / 2 - (theta + std::asin(0.5))) / (6 * M_PI);
+  EXPECT_NEAR(hit->tau, expected, 1e-12);
+  EXPECT_TRUE(hit->feature == 0 || hit->feature == 1);
+}
+
+TEST(TimeOfImpact, SwingingFlipperTipReachesABallBeyondTheSides) {
+  SwingingAxis<double> axis;
+  axis.pivot = Vec2<double>(0.25, 0.25);
+  axis.baseQuarter = 1;
+  axis.omega = -6 * M_PI;
+  axis.length = 1.5;
+  axis.radius = 0.25;
+  // 1.9 L out at θ = π/4: beyond the axis's end, so only the tip reaches it, when the axis is
+  // Δ short of θ with 1.5² + 1.9² − 2·1.5·1.9 cos Δ = 0.5².
+  const double theta = M_PI / 4, r = 1.9;
+  const double delta = std::acos((1.5 * 1.5 + r * r - 0.25) / (2 * 1.5 * r));
+  const Trajectory<double> ball{{0.25 + r * std::cos(theta), 0.25 + r * std::sin(theta)}, {0, 0}, {0, 0}};
+  const auto hit = swingingCapsuleTimeOfImpact(ball, 0.25, axis, 1.0 / 12);
+  ASSERT_TRUE(hit);
+  EXPECT_EQ(hit->feature, 3);
+  EXPECT_NEAR(hit->tau, (M_PI / 2 - theta - delta) / (6 * M_PI), 1e-12);
+}
+
+}  // namespace
+}  // namespace gizmo
