@@ -101,7 +101,7 @@ class GameBoard final : private BoardAccess<Real> {
   void releaseContactsOn(GizmoId g) override;
 
   void rebuild();
-  void tickOnce(const Real& length);
+  void tickUntil(const Real& end);
   void advanceTo(const Real& t);
   void execute(const Event<Real>& e);
   void fireTriggersOf(GizmoId source);

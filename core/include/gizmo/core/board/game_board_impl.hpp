@@ -148,21 +148,26 @@ void GameBoard<Real>::scheduleInput(const Real& time, int key, KeyDirection dire
   inputs_.insert(at, PendingInput{time, key, direction});
 }
 
+// Tick ends are counted from the start (start + k·maxTick), not summed, so that a long tick
+// ends exactly at start + time.
 template <class Real>
 void GameBoard<Real>::tick(const Real& time) {
   rebuild();
-  Real left = time;
-  while (params_.maxTick < left) {
-    tickOnce(params_.maxTick);
-    left -= params_.maxTick;
+  const Real start = now_, end = now_ + time;
+  if (!(start < end)) return;
+  for (std::int64_t k = 1;; ++k) {
+    const Real next = start + Real(k) * params_.maxTick;
+    if (!(next < end)) {
+      tickUntil(end);
+      return;
+    }
+    tickUntil(next);
   }
-  if (Real(0) < left) tickOnce(left);
 }
 
 // Seed, steps 2–4: an end-of-tick event, then the earliest event until that one is reached.
 template <class Real>
-void GameBoard<Real>::tickOnce(const Real& length) {
-  const Real end = now_ + length;
+void GameBoard<Real>::tickUntil(const Real& end) {
   schedule(EventKind::EndOfTick, end, kNoGizmo, kNoGizmo, -1);
   while (nextInput_ < inputs_.size() && !(end < inputs_[nextInput_].time)) {
     const PendingInput& in = inputs_[nextInput_++];
