@@ -110,6 +110,11 @@ class GameBoard final : private BoardAccess<Real> {
   void scheduleBallEvents(Ball<Real>& ball);
   void computePair(GizmoId ball, GizmoId other);
   void gatherCandidates(GizmoId ball, std::vector<GizmoId>& out);
+  struct CellRange {
+    int x0, x1, y0, y1;  // inclusive; empty when x1 < x0
+  };
+  static CellRange cellsOf(const Box<Real>& box);
+  void placeBall(GizmoId id, bool inGrid);
   Real frictionTickTime(Ball<Real>& ball) const;
   Real infinity() const;
 
@@ -131,7 +136,9 @@ class GameBoard final : private BoardAccess<Real> {
   bool built_ = false;
   std::vector<std::int32_t> ballIndex_;        // gizmo id → index into balls_, or −1
   std::vector<GizmoId> colliders_;             // balls × gizmos: the pair's collider, or none
-  std::array<std::vector<GizmoId>, 400> grid_; // 1 L cells → fixed gizmos that reach into them
+  std::array<std::vector<GizmoId>, kBoardSize * kBoardSize> grid_;  // 1 L cells → fixed gizmos that reach into them
+  std::array<std::vector<GizmoId>, kBoardSize * kBoardSize> ballGrid_;  // 1 L cells → free balls whose boxes reach in
+  std::vector<CellRange> ballCells_;           // per gizmo: the cells of ballGrid_ it is listed in
   std::vector<Box<Real>> boxes_;               // per gizmo: where it can be until validUntil_
   std::vector<Real> validUntil_;               // per gizmo: its predictions hold until then
   std::vector<std::uint32_t> stamp_;           // marks the gizmos of the current recomputation

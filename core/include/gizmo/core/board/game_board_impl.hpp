@@ -20,6 +20,26 @@ inline int cellOf(double v) { return std::clamp(static_cast<int>(std::floor(v)),
 }  // namespace detail
 
 template <class Real>
+typename GameBoard<Real>::CellRange GameBoard<Real>::cellsOf(const Box<Real>& b) {
+  return CellRange{detail::cellOf(toDouble(b.lo.x)), detail::cellOf(toDouble(b.hi.x)), detail::cellOf(toDouble(b.lo.y)),
+                   detail::cellOf(toDouble(b.hi.y))};
+}
+
+// Moves a ball's entries in the ball grid to the cells its new box covers (none when captured).
+template <class Real>
+void GameBoard<Real>::placeBall(GizmoId id, bool inGrid) {
+  const std::size_t i = static_cast<std::size_t>(id);
+  CellRange& old = ballCells_[i];
+  for (int y = old.y0; y <= old.y1; ++y)
+    for (int x = old.x0; x <= old.x1; ++x) std::erase(ballGrid_[std::size_t(y * kBoardSize + x)], id);
+  old = CellRange{0, -1, 0, -1};
+  if (!inGrid) return;
+  old = cellsOf(boxes_[i]);
+  for (int y = old.y0; y <= old.y1; ++y)
+    for (int x = old.x0; x <= old.x1; ++x) ballGrid_[std::size_t(y * kBoardSize + x)].push_back(id);
+}
+
+template <class Real>
 GameBoard<Real>::GameBoard(const PhysicsParams<Real>& params) : params_(params) {
   add(std::make_unique<OuterWalls<Real>>());
 }
@@ -118,15 +138,13 @@ void GameBoard<Real>::rebuild() {
       if (r != PairRole::None) colliders_[i * n + g] = GizmoId(r == PairRole::FirstCollides ? lo : hi);
     }
   for (auto& cell : grid_) cell.clear();
+  for (auto& cell : ballGrid_) cell.clear();
+  ballCells_.assign(n, CellRange{0, -1, 0, -1});
   for (std::size_t g = 1; g < n; ++g) {  // the walls (id 0) are checked for every ball instead
     if (gizmos_[g]->asBall()) continue;
-    const Box<Real> b = gizmos_[g]->bounds();
-    // Cells a gizmo merely touches on their edge need no entry: a ball there meets it through
-    // the neighbouring cell, whose box it also overlaps.
-    const int x0 = detail::cellOf(toDouble(b.lo.x)), x1 = detail::cellOf(toDouble(b.hi.x));
-    const int y0 = detail::cellOf(toDouble(b.lo.y)), y1 = detail::cellOf(toDouble(b.hi.y));
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) grid_[std::size_t(y * kBoardSize + x)].push_back(GizmoId(g));
+    const CellRange c = cellsOf(gizmos_[g]->bounds());
+    for (int y = c.y0; y <= c.y1; ++y)
+      for (int x = c.x0; x <= c.x1; ++x) grid_[std::size_t(y * kBoardSize + x)].push_back(GizmoId(g));
   }
   boxes_.assign(n, Box<Real>{});
   for (std::size_t g = 0; g < n; ++g) boxes_[g] = gizmos_[g]->bounds();
@@ -340,6 +358,7 @@ void GameBoard<Real>::recomputePending() {
         boxes_[i] = sweptBox(b->trajectoryAt(now_), params_.maxTick, Ball<Real>::radius(),
                              fromDouble<Real>(detail::kBroadPhaseMargin));
       }
+      placeBall(g, !b->captured());
     } else {
       const std::optional<Real> until = gizmos_[i]->predictionHorizon();
       validUntil_[i] = until ? *until : infinity();
@@ -363,12 +382,17 @@ void GameBoard<Real>::recomputePending() {
     } else {
       G.scheduleOwnEvents(*this);
       const Box<Real> reach = G.bounds();
-      for (GizmoId ballId : balls_) {
-        const std::size_t bi = static_cast<std::size_t>(ballId);
-        if (stamp_[bi] == inTodo || !boxes_[bi].overlaps(reach)) continue;
-        if (gizmos_[bi]->asBall()->captured()) continue;
-        computePair(ballId, g);
-      }
+      candidates_.clear();
+      const CellRange c = cellsOf(reach);
+      for (int y = c.y0; y <= c.y1; ++y)
+        for (int x = c.x0; x <= c.x1; ++x)
+          for (GizmoId ballId : ballGrid_[std::size_t(y * kBoardSize + x)]) {
+            const std::size_t bi = static_cast<std::size_t>(ballId);
+            if (stamp_[bi] != inTodo && boxes_[bi].overlaps(reach)) candidates_.push_back(ballId);
+          }
+      std::sort(candidates_.begin(), candidates_.end());
+      candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
+      for (GizmoId ballId : candidates_) computePair(ballId, g);
     }
   }
 }
@@ -405,17 +429,14 @@ void GameBoard<Real>::gatherCandidates(GizmoId ballId, std::vector<GizmoId>& out
   out.clear();
   const Box<Real>& box = boxes_[static_cast<std::size_t>(ballId)];
   out.push_back(outerWallsId());
-  const int x0 = detail::cellOf(toDouble(box.lo.x)), x1 = detail::cellOf(toDouble(box.hi.x));
-  const int y0 = detail::cellOf(toDouble(box.lo.y)), y1 = detail::cellOf(toDouble(box.hi.y));
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x)
-      for (GizmoId g : grid_[std::size_t(y * kBoardSize + x)]) out.push_back(g);
-  for (GizmoId other : balls_) {
-    if (other == ballId) continue;
-    const std::size_t oi = static_cast<std::size_t>(other);
-    if (gizmos_[oi]->asBall()->captured()) continue;
-    if (boxes_[oi].overlaps(box)) out.push_back(other);
-  }
+  const CellRange c = cellsOf(box);
+  for (int y = c.y0; y <= c.y1; ++y)
+    for (int x = c.x0; x <= c.x1; ++x) {
+      const std::size_t cell = std::size_t(y * kBoardSize + x);
+      out.insert(out.end(), grid_[cell].begin(), grid_[cell].end());
+      for (GizmoId other : ballGrid_[cell])
+        if (other != ballId && boxes_[static_cast<std::size_t>(other)].overlaps(box)) out.push_back(other);
+    }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
 }
