@@ -1,0 +1,75 @@
+// The same board in every scalar of the ladder: each hits the reference numbers to its own
+// precision, and the classic model's stacked-ball time stays within one maximum tick.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/board_builder.hpp"
+
+namespace gizmo {
+namespace {
+
+using test::ballAt;
+using test::emptyBoard;
+using test::gizmoAt;
+
+// The absorber catches the dropped ball at t = √(2·7.75/25); returns that time.
+template <class Real>
+Real dropTime() {
+  BoardSpec s = emptyBoard(25, 0, 0);
+  s.gizmos.push_back(gizmoAt(GizmoType::Absorber, "A", 0, 19, 0, 20, 1));
+  s.balls.push_back(ballAt("B", 1, 11));
+  auto board = test::build<Real>(s);
+  test::Recorder<Real> rec;
+  board->setObserver(&rec);
+  board->tick(Real(1));
+  for (const auto& e : rec.executed)
+    if (e.event.kind == EventKind::Collision) return e.event.time;
+  ADD_FAILURE() << "no collision";
+  return Real(0);
+}
+
+template <class Real>
+void expectDropTime(double relativeTolerance) {
+  const Real exact = sqrtOf(Real(Real(2) * Real(7.75) / Real(25)));
+  const Real t = dropTime<Real>();
+  EXPECT_LE(toDouble(Real(absOf(Real(t - exact)) / exact)), relativeTolerance) << scalarName<Real>();
+}
+
+// A handful of ulps of each type: the time is one closed-form root.
+TEST(PrecisionLadder, DropTimeToEachTypesPrecision) {
+  expectDropTime<float>(8 * 1.2e-7);
+  expectDropTime<double>(8 * 2.3e-16);
+  expectDropTime<long double>(8 * 1.1e-19);
+  expectDropTime<Float128>(8 * 1.0e-34);
+  setMpfrBits(256);
+  expectDropTime<MpfrReal>(8 * 1.8e-77);
+  setMpfrBits(53);
+}
+
+TEST(PrecisionLadder, HigherPrecisionAgreesWithDoubleToDoublesPrecision) {
+  const double d = dropTime<double>();
+  const Float128 q = dropTime<Float128>();
+  EXPECT_NEAR(d, toDouble(q), 4 * 2.3e-16);
+  EXPECT_NE(Float128(d), q);  // and it is genuinely more precise
+}
+
+TEST(ReferenceNumbers, FiveStackedBallsClassicWithinOneTick) {
+  BoardSpec s = emptyBoard(25, 0, 0);
+  for (int i = 0; i < 5; ++i) s.balls.push_back(ballAt("B" + std::to_string(i), 10, 9 - i));
+  auto board = test::build(s, MotionModel::Classic, 0.05);
+  test::Recorder<double> rec;
+  board->setObserver(&rec);
+  board->tick(1.5);
+  const GizmoId lowest = *board->find("B0");
+  for (const auto& e : rec.executed)
+    if (e.event.kind == EventKind::Collision && (e.event.a == lowest || e.event.b == lowest)) {
+      EXPECT_EQ(e.event.a, GameBoard<double>::outerWallsId());
+      EXPECT_NEAR(e.event.time, 0.927362, 0.05);
+      return;
+    }
+  ADD_FAILURE() << "the lowest ball never reached the floor";
+}
+
+}  // namespace
+}  // namespace gizmo
