@@ -43,13 +43,21 @@ namespace {
 
 using Rational = boost::multiprecision::mpq_rational;
 
+// A number for a message: plain decimal digits unless the magnitude is extreme; never rounded.
 std::string number(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  char buf[512];
+  const double a = std::fabs(v);
+  const bool plain = v == 0 || (a >= 1e-4 && a < 1e15);
+  const auto r = plain ? std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed)
+                       : std::to_chars(buf, buf + sizeof buf, v);
   return std::string(buf, r.ptr);
 }
 
-std::string quoted(const std::string& name) { return "'" + name + "'"; }
+// A name in quotes, cut short when it is very long.
+std::string quoted(const std::string& name) {
+  if (name.size() > 64) return "'" + name.substr(0, 61) + "...'";
+  return "'" + name + "'";
+}
 
 bool earlier(const SourcePos& a, const SourcePos& b) {
   return a.line < b.line || (a.line == b.line && a.column < b.column);

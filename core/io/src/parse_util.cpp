@@ -43,12 +43,18 @@ bool decimalSyntax(std::string_view s) {
   return i == s.size();
 }
 
-// Shows a token in a message, shortened when it is very long.
-std::string show(std::string_view token) {
-  if (token.size() > 40) return "'" + std::string(token.substr(0, 37)) + "...'";
-  return "'" + std::string(token) + "'";
-}
+std::string show(std::string_view token) { return quote(token); }
 }  // namespace
+
+std::string quote(std::string_view text) {
+  if (text.size() > 64) return "'" + std::string(text.substr(0, 61)) + "...'";
+  return "'" + std::string(text) + "'";
+}
+
+std::string controlCharacterProblem(unsigned char c) {
+  static const char* hex = "0123456789ABCDEF";
+  return std::string("unexpected control character (byte 0x") + hex[c >> 4] + hex[c & 15] + ")";
+}
 
 std::string nameProblem(std::string_view name) {
   if (name.empty()) return "a name cannot be empty";

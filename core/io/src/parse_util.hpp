@@ -21,6 +21,12 @@ inline bool startsWithBom(std::string_view s) { return s.substr(0, 3) == kBom; }
 
 std::string toLowerAscii(std::string_view s);
 
+// 'text' in single quotes for a message, cut short (with "...") when it is very long.
+std::string quote(std::string_view text);
+
+// "unexpected control character (byte 0x0D)".
+std::string controlCharacterProblem(unsigned char c);
+
 // Empty when the name is letters, digits and '_' (at least one), else what is wrong.
 std::string nameProblem(std::string_view name);
 

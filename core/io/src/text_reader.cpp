@@ -54,7 +54,6 @@ const CommandInfo* findCommand(std::string_view word) {
   return nullptr;
 }
 
-std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 
 class TextReader {
  public:
@@ -81,11 +80,13 @@ class TextReader {
   struct Ref {
     bool ball = false;
     std::size_t index = 0;
+    int line = 0;  // where it was created
   };
   struct Unresolved {
     std::string name;
     SourcePos at;
     std::string message;
+    int createdLater = 0;  // the first line after it that created the name, if any
   };
 
   SourcePos at(const Token& t) const { return SourcePos{line_, t.column}; }
@@ -103,9 +104,7 @@ class TextReader {
     for (std::size_t i = 0; i < text.size(); ++i) {
       const unsigned char c = static_cast<unsigned char>(text[i]);
       if ((c < 0x20 && c != '\t') || c == 0x7F) {
-        static const char* hex = "0123456789ABCDEF";
-        rep_.error(SourcePos{line_, static_cast<int>(i) + 1},
-                   std::string("unexpected control character (byte 0x") + hex[c >> 4] + hex[c & 15] + ")");
+        rep_.error(SourcePos{line_, static_cast<int>(i) + 1}, controlCharacterProblem(c));
         return;
       }
     }
@@ -126,7 +125,7 @@ class TextReader {
     }
     const CommandInfo* cmd = findCommand(t[0].text);
     if (!cmd) {
-      rep_.error(at(t[0]), quoted(t[0].text) +
+      rep_.error(at(t[0]), quote(t[0].text) +
                                " is not part of the Gizmoball format; the commands are Square, Circle, Triangle, "
                                "LeftFlipper, RightFlipper, Absorber, Ball, Rotate, Delete, Move, Connect, "
                                "KeyConnect, Gravity and Friction");
@@ -144,7 +143,7 @@ class TextReader {
     }
     if (t.size() > cmd->tokens) {
       const Token& extra = t[cmd->tokens];
-      rep_.error(at(extra), "unexpected " + quoted(extra.text) + " after the end of the command: " +
+      rep_.error(at(extra), "unexpected " + quote(extra.text) + " after the end of the command: " +
                                 std::string(cmd->usage) + " takes " + std::to_string(cmd->tokens - 1) + " value" +
                                 (cmd->tokens == 2 ? "" : "s") +
                                 (extra.text[0] == '#' ? " (comments must be on a line of their own)" : ""));
@@ -167,7 +166,7 @@ class TextReader {
 
   void keywordCase(const Token& t, std::string_view canonical) {
     rep_.lenient("keyword-case", at(t),
-                 quoted(t.text) + " is written " + quoted(canonical) +
+                 quote(t.text) + " is written " + quote(canonical) +
                      " in the standard format; keywords are read without regard to case");
   }
 
@@ -179,7 +178,7 @@ class TextReader {
     }
     if (w.writtenAsDecimal)
       rep_.lenient("integral-decimal", at(t),
-                   quoted(t.text) + " is read as the whole number " + std::to_string(w.value) +
+                   quote(t.text) + " is read as the whole number " + std::to_string(w.value) +
                        " (the standard format writes whole numbers here)");
     out = w.value;
     return true;
@@ -214,17 +213,21 @@ class TextReader {
       return false;
     }
     if (const auto it = names_.find(name); it != names_.end()) {
-      rep_.error(at(t), "the name " + quoted(name) + " is already used by the " + kindOf(it->second) + " created on line " +
-                            std::to_string(createdLine_.at(name)) + "; names must be unique");
+      rep_.error(at(t), "the name " + quote(name) + " is already used by the " + kindOf(it->second) + " created on line " +
+                            std::to_string(it->second.line) + "; names must be unique");
       return false;
     }
     return true;
   }
 
   void created(const std::string& name, Ref ref) {
+    ref.line = line_;
     names_[name] = ref;
-    createdLine_[name] = line_;
-    creations_[name].push_back(line_);
+    // Unknown-name errors about this name learn that it is created later.
+    if (const auto it = pending_.find(name); it != pending_.end()) {
+      for (const std::size_t i : it->second) unresolved_[i].createdLater = line_;
+      pending_.erase(it);
+    }
   }
 
   void createGizmo(const CommandInfo& cmd, const std::vector<Token>& t) {
@@ -294,9 +297,10 @@ class TextReader {
     const std::string name(t.text);
     if (const auto it = names_.find(name); it != names_.end()) return &it->second;
     if (!failed_.count(name)) {
-      std::string message = "there is no " + what + " named " + quoted(name);
+      std::string message = "there is no " + what + " named " + quote(name);
       if (toLowerAscii(name) == "outerwalls") message += " (the outer walls are named OuterWalls)";
-      unresolved_.push_back(Unresolved{name, at(t), std::move(message)});
+      pending_[name].push_back(unresolved_.size());
+      unresolved_.push_back(Unresolved{name, at(t), std::move(message), 0});
     }
     return nullptr;
   }
@@ -305,12 +309,12 @@ class TextReader {
     const Ref* r = lookup(t[1], "gizmo");
     if (!r) return;
     if (r->ball) {
-      rep_.error(at(t[1]), "ball " + quoted(t[1].text) + " cannot be rotated: only gizmos turn");
+      rep_.error(at(t[1]), "ball " + quote(t[1].text) + " cannot be rotated: only gizmos turn");
       return;
     }
     GizmoSpec& g = gizmos_[r->index];
     if (g.type == GizmoType::Absorber) {
-      rep_.error(at(t[1]), "absorber " + quoted(t[1].text) + " cannot be rotated");
+      rep_.error(at(t[1]), "absorber " + quote(t[1].text) + " cannot be rotated");
       return;
     }
     g.orientation = (g.orientation + 90) % 360;
@@ -399,7 +403,7 @@ class TextReader {
   void keyConnect(const std::vector<Token>& t) {
     bool ok = true;
     if (toLowerAscii(t[1].text) != "key") {
-      rep_.error(at(t[1]), "expected the word 'key' after KeyConnect, not " + quoted(t[1].text));
+      rep_.error(at(t[1]), "expected the word 'key' after KeyConnect, not " + quote(t[1].text));
       ok = false;
     } else if (t[1].text != "key") {
       keywordCase(t[1], "key");
@@ -419,7 +423,7 @@ class TextReader {
       direction = dir == "down" ? KeyDirection::Down : KeyDirection::Up;
       if (t[3].text != dir) keywordCase(t[3], dir);
     } else {
-      rep_.error(at(t[3]), "the key direction must be down or up, not " + quoted(t[3].text));
+      rep_.error(at(t[3]), "the key direction must be down or up, not " + quote(t[3].text));
       ok = false;
     }
     ok = target(t[4]) && ok;
@@ -468,12 +472,9 @@ class TextReader {
 
   BoardSpec finish() {
     for (Unresolved& u : unresolved_) {
-      if (const auto it = creations_.find(u.name); it != creations_.end()) {
-        const auto later = std::upper_bound(it->second.begin(), it->second.end(), u.at.line);
-        if (later != it->second.end())
-          u.message += " at this point (it is created later, on line " + std::to_string(*later) +
-                       "; commands take effect in file order)";
-      }
+      if (u.createdLater > 0)
+        u.message += " at this point (it is created later, on line " + std::to_string(u.createdLater) +
+                     "; commands take effect in file order)";
       rep_.error(u.at, std::move(u.message));
     }
     BoardSpec board;
@@ -501,8 +502,7 @@ class TextReader {
   std::vector<BallSpec> balls_;
   std::vector<char> ballAlive_;
   std::unordered_map<std::string, Ref> names_;               // live objects
-  std::unordered_map<std::string, int> createdLine_;         // line of the live object's creation
-  std::unordered_map<std::string, std::vector<int>> creations_;  // every line that created the name
+  std::unordered_map<std::string, std::vector<std::size_t>> pending_;  // unresolved_ entries by name
   std::unordered_set<std::string> failed_;  // names whose statement failed: no second error about them
   std::vector<Unresolved> unresolved_;
 

@@ -2,6 +2,7 @@
 // board schema, the numbers and every position reported are checked here.
 #include "gizmo/io/xml_reader.hpp"
 
+#include <algorithm>
 #include <initializer_list>
 #include <map>
 #include <tuple>
@@ -25,7 +26,6 @@ std::string_view trimmed(std::string_view s) {
   return s;
 }
 
-std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 std::string tag(std::string_view s) { return "<" + std::string(s) + ">"; }
 
 // The attribute names of the start tag whose element name starts at nameOffset, with the offset of
@@ -111,9 +111,14 @@ class XmlReader {
     const std::ptrdiff_t off = n.offset_debug();  // the element's name, just after '<'
     return off > 0 ? lines_.position(static_cast<std::size_t>(off - 1)) : SourcePos{};
   }
+  // The first character of a text node that is not white space.
   SourcePos textAt(const pugi::xml_node& n) const {
     const std::ptrdiff_t off = n.offset_debug();
-    return off >= 0 ? lines_.position(static_cast<std::size_t>(off)) : SourcePos{};
+    if (off < 0) return SourcePos{};
+    std::size_t i = static_cast<std::size_t>(off);
+    if (n.type() == pugi::node_pcdata)
+      while (i < content_.size() && xmlSpace(content_[i])) ++i;
+    return lines_.position(std::min(i, content_.size()));
   }
 
   void textError(const pugi::xml_node& n, const std::string& where) {
@@ -142,11 +147,11 @@ class XmlReader {
         const bool xmlMachinery = name.substr(0, 5) == "xmlns" || name.substr(0, 4) == "xsi:";
         if (!xmlMachinery)
           rep_.lenient("unknown-attribute:" + element + ":" + std::string(name), at,
-                       "unknown attribute " + quoted(name) + " on " + tag(element) + " ignored");
+                       "unknown attribute " + quote(name) + " on " + tag(element) + " ignored");
         continue;
       }
       if (out.count(std::string(name))) {
-        rep_.error(at, "the attribute " + quoted(name) + " is given twice");
+        rep_.error(at, "the attribute " + quote(name) + " is given twice");
         ok = false;
         continue;
       }
@@ -154,7 +159,7 @@ class XmlReader {
     }
     for (std::string_view k : required)
       if (!out.count(std::string(k))) {
-        rep_.error(elementAt(e), tag(element) + " lacks the required attribute " + quoted(k));
+        rep_.error(elementAt(e), tag(element) + " lacks the required attribute " + quote(k));
         ok = false;
       }
     return ok;
@@ -178,7 +183,7 @@ class XmlReader {
     }
     if (w.writtenAsDecimal)
       rep_.lenient("integral-decimal", a.at,
-                   quoted(a.value) + " is read as the whole number " + std::to_string(w.value) +
+                   quote(a.value) + " is read as the whole number " + std::to_string(w.value) +
                        " (the schema has whole numbers here)");
     out = w.value;
     return true;
@@ -266,9 +271,9 @@ class XmlReader {
       }
     }
     if (!sawGizmos)
-      rep_.lenient("missing", elementAt(board), "the board has no <gizmos> element; the schema requires one (read as empty)");
+      rep_.lenient("missing-gizmos", elementAt(board), "the board has no <gizmos> element; the schema requires one (read as empty)");
     if (!sawConnections)
-      rep_.lenient("missing", elementAt(board),
+      rep_.lenient("missing-connections", elementAt(board),
                    "the board has no <connections> element; the schema requires one (read as empty)");
   }
 
@@ -394,9 +399,9 @@ class XmlReader {
       k.direction = lower == "down" ? KeyDirection::Down : KeyDirection::Up;
       if (dir.value != lower)
         rep_.lenient("keyword-case", dir.at,
-                     quoted(dir.value) + " is written " + quoted(lower) + " in the schema; read without regard to case");
+                     quote(dir.value) + " is written " + quote(lower) + " in the schema; read without regard to case");
     } else {
-      rep_.error(dir.at, "keyDirection must be down or up, not " + quoted(dir.value));
+      rep_.error(dir.at, "keyDirection must be down or up, not " + quote(dir.value));
       ok = false;
     }
     if (!ok) return;

@@ -58,12 +58,20 @@ std::optional<Real> circleTimeOfImpact(const Trajectory<Real>& t, const Real& r,
                                        const Real& limit) {
   const Vec2<Real> d = t.p - circle.centre;
   const Real reach = r + circle.radius;
-  // Cheap rejection: the path cannot come within reach in time.
-  const Real half = Real(1) / Real(2);
-  const Real travel = length(t.v) * limit + half * length(t.a) * limit * limit;
   const Real dist2 = lengthSquared(d);
-  const Real far = reach + travel;
-  if (far * far < dist2) return std::nullopt;
+  // Cheap rejection: the straight part of the path, d + v τ for τ in [0, limit], passes no
+  // closer than `closest` to the centre, and gravity bends it by at most ½|a| limit².
+  {
+    const Real half = Real(1) / Real(2);
+    const Real speed2 = lengthSquared(t.v);
+    Real along = speed2 == Real(0) ? Real(0) : Real(-dot(d, t.v) / speed2);
+    along = minOf(maxOf(along, Real(0)), limit);
+    const Real closest = length(Vec2<Real>(d + along * t.v));
+    const Real bend = half * length(t.a) * limit * limit;
+    // A little headroom for the rounding of the lines above keeps the test a bound.
+    const Real slack = Real(1) + Real(16) * epsilonOf<Real>();
+    if (reach * slack + bend < closest) return std::nullopt;
+  }
   const Real quarter = Real(1) / Real(4);
   const std::array<Real, 5> c{dist2 - reach * reach, Real(2) * dot(d, t.v), lengthSquared(t.v) + dot(d, t.a),
                               dot(t.v, t.a), quarter * lengthSquared(t.a)};

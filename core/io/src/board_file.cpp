@@ -1,0 +1,24 @@
+#include "gizmo/io/board_file.hpp"
+
+#include "gizmo/io/text_reader.hpp"
+#include "gizmo/io/xml_reader.hpp"
+#include "parse_util.hpp"
+
+namespace gizmo::io {
+
+static_assert(kMaxBoardFileBytes == detail::kMaxFileBytes);
+
+ReadResult readBoardString(std::string_view content, const std::string& name) {
+  if (content.size() > detail::kMaxFileBytes)
+    detail::fail(name, {}, "the file is larger than 16 MiB, the limit for board files");
+  detail::rejectNul(content, name);
+  std::string_view rest = content;
+  if (detail::startsWithBom(rest)) rest.remove_prefix(detail::kBom.size());
+  const std::size_t first = rest.find_first_not_of(" \t\r\n");
+  if (first != std::string_view::npos && rest[first] == '<') return readXmlBoard(content, name);
+  return readTextBoard(content, name);
+}
+
+ReadResult readBoardFile(const std::string& path) { return readBoardString(detail::readWholeFile(path), path); }
+
+}  // namespace gizmo::io
