@@ -99,6 +99,7 @@ class GameBoard final : private BoardAccess<Real> {
     if (observer_) observer_->modelRuleApplied(now_, rule, gizmo, other);
   }
   void releaseContactsOn(GizmoId g) override;
+  bool jammed() const override { return collisionsInWindow_ > kJamThreshold; }
 
   void rebuild();
   void tickUntil(const Real& end);
@@ -149,6 +150,12 @@ class GameBoard final : private BoardAccess<Real> {
   std::vector<GizmoId> candidates_;
   std::array<std::uint64_t, kEventKindCount> executed_{};
   std::uint64_t eventsThisInstant_ = 0;
+  // The jam rule: more than kJamThreshold collisions within kJamWindow seconds of board time
+  // (counted from the first of them) leave no rebound.
+  Real jamWindowStart_{0};
+  std::uint64_t collisionsInWindow_ = 0;
+  static constexpr std::uint64_t kJamThreshold = 64;
+  static constexpr double kJamWindow = 1e-6;
   BoardObserver<Real>* observer_ = nullptr;
 };
 

@@ -235,6 +235,13 @@ void GameBoard<Real>::execute(const Event<Real>& e) {
   switch (e.kind) {
     case EventKind::Collision:
     case EventKind::Leave: {
+      if (e.kind == EventKind::Collision) {
+        if (fromDouble<Real>(kJamWindow) < Real(now_ - jamWindowStart_)) {
+          jamWindowStart_ = now_;
+          collisionsInWindow_ = 0;
+        }
+        ++collisionsInWindow_;
+      }
       AbstractGizmo<Real>& collider = gizmo(e.a);
       AbstractGizmo<Real>& collidee = gizmo(e.b);
       collider.collide(collidee, Contact<Real>{e.time, e.feature, e.kind}, *this);

@@ -14,6 +14,7 @@ enum class ModelRule : std::uint8_t {
   FlipperBlocked,    // a flipper pinching a ball stops where it is
   Captured,          // an absorber captured a ball
   Released,          // an absorber fired a ball
+  Jammed,            // too many hits at one instant: this one leaves no rebound (see docs/physics.md)
 };
 
 inline std::string_view modelRuleName(ModelRule r) {
@@ -26,6 +27,7 @@ inline std::string_view modelRuleName(ModelRule r) {
     case ModelRule::FlipperBlocked: return "flipper-blocked";
     case ModelRule::Captured: return "captured";
     case ModelRule::Released: return "released";
+    case ModelRule::Jammed: return "jammed";
   }
   return "?";
 }

@@ -44,18 +44,25 @@ std::optional<Real> segmentTimeOfImpact(const Trajectory<Real>& t, const Real& r
   const std::array<Real, 5> c{height - r, dot(t.v, s.normal), half * dot(t.a, s.normal), Real(0), Real(0)};
   // Cheap rejection: the gap cannot close within the limit.
   if (Real(0) < c[0] && Real(0) <= c[1] && Real(0) <= c[2]) return std::nullopt;
+  // The contact point must lie on the segment; at either end it must also be moving onto it
+  // (a ball leaving over an end meets that end's vertex instead, not the edge again).
   auto onSegment = [&](const Real& tau) {
     const Real u = dot(t.positionAt(tau) - s.a, s.direction);
-    return Real(0) <= u && u <= s.length;
+    if (u < Real(0) || s.length < u) return false;
+    const Real du = dot(t.velocityAt(tau), s.direction), ddu = dot(t.a, s.direction);
+    if (u == Real(0) && (du < Real(0) || (du == Real(0) && ddu < Real(0)))) return false;
+    if (u == s.length && (Real(0) < du || (du == Real(0) && Real(0) < ddu))) return false;
+    return true;
   };
   return firstPolynomialEntry(c, limit, onSegment);
 }
 
 // Ball against a circle of radius R around centre (R = 0: a polygon's vertex), or two balls
 // with the relative path: the gap is |d(τ)|² − (r + R)², a quartic when a ≠ 0.
+// afterNow: a contact at τ = 0 does not count (a graze already let through at this instant).
 template <class Real>
 std::optional<Real> circleTimeOfImpact(const Trajectory<Real>& t, const Real& r, const CircleFeature<Real>& circle,
-                                       const Real& limit) {
+                                       const Real& limit, bool afterNow = false) {
   const Vec2<Real> d = t.p - circle.centre;
   const Real reach = r + circle.radius;
   const Real dist2 = lengthSquared(d);
@@ -75,14 +82,14 @@ std::optional<Real> circleTimeOfImpact(const Trajectory<Real>& t, const Real& r,
   const Real quarter = Real(1) / Real(4);
   const std::array<Real, 5> c{dist2 - reach * reach, Real(2) * dot(d, t.v), lengthSquared(t.v) + dot(d, t.a),
                               dot(t.v, t.a), quarter * lengthSquared(t.a)};
-  return firstPolynomialEntry(c, limit, [](const Real&) { return true; });
+  return firstPolynomialEntry(c, limit, [&](const Real& tau) { return !afterNow || Real(0) < tau; });
 }
 
 template <class Real>
 std::optional<Real> ballTimeOfImpact(const Trajectory<Real>& x, const Trajectory<Real>& y, const Real& r,
-                                     const Real& limit) {
+                                     const Real& limit, bool afterNow = false) {
   const Trajectory<Real> relative{x.p - y.p, x.v - y.v, x.a - y.a};
-  return circleTimeOfImpact(relative, r, CircleFeature<Real>{Vec2<Real>(), r}, limit);
+  return circleTimeOfImpact(relative, r, CircleFeature<Real>{Vec2<Real>(), r}, limit, afterNow);
 }
 
 }  // namespace gizmo

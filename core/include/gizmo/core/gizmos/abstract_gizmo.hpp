@@ -41,6 +41,9 @@ class BoardAccess {
   virtual void markForRecompute(GizmoId id) = 0;
   virtual void schedule(EventKind kind, const Real& time, GizmoId a, GizmoId b, std::int32_t feature) = 0;
   virtual void reportRule(ModelRule rule, GizmoId gizmo, GizmoId other) = 0;
+  // Many hits at this one instant: balls are jammed between surfaces with no room to move, and
+  // hits now leave no rebound along their normal.
+  virtual bool jammed() const = 0;
   // Every ball sliding on gizmo g leaves that contact (g is about to move).
   virtual void releaseContactsOn(GizmoId g) = 0;
 };

@@ -104,7 +104,9 @@ class Ball final : public AbstractGizmo<Real> {
                                                   const PhysicsParams<Real>&) const override {
     const Ball* b = other.asBall();
     if (!b || captured_ || b->captured()) return std::nullopt;
-    const std::optional<Real> tau = ballTimeOfImpact(trajectoryAt(now), b->trajectoryAt(now), radius(), limit - now);
+    const bool grazedNow = grazed_ && grazed_->other == b->id() && grazed_->time == now;
+    const std::optional<Real> tau =
+        ballTimeOfImpact(trajectoryAt(now), b->trajectoryAt(now), radius(), limit - now, grazedNow);
     if (!tau) return std::nullopt;
     return Contact<Real>{now + *tau, 0, EventKind::Collision};
   }
@@ -122,13 +124,42 @@ class Ball final : public AbstractGizmo<Real> {
     if (dist == Real(0)) return;  // coincident centres: no normal to push along
     const Vec2<Real> n(d.x / dist, d.y / dist);
     const Real closing = dot(va - vb, n);
-    // Touching without closing speed, but accelerating together (one ball supported): a slow hit.
-    if (Real(0) < closing || (closing == Real(0) && !(dot(a_ - b->acceleration(), n) < Real(0)))) return;
+    // Touching and barely opening (under restSpeed) while accelerating together counts as a
+    // slow hit: a prediction a rounding error ahead of the present lands on it.
+    if (!(closing < Real(0)) && !(closing < params.restSpeed && dot(a_ - b->acceleration(), n) < Real(0))) return;
+    const bool jammed = board.jammed();
+    if (jammed && -closing <= Real(1e-3) * length(Vec2<Real>(va - vb))) {
+      // Jammed balls grazing each other (closing at under a thousandth of their relative speed:
+      // they slide past, touching): with no room around them, any push would come straight back.
+      // They are let through for this instant (overlapping by a rounding error at most) and the
+      // pair looks for its next contact after it.
+      grazed_ = Graze{b->id(), now};
+      b->grazed_ = Graze{this->id(), now};
+      board.reportRule(ModelRule::Jammed, this->id(), b->id());
+      return;
+    }
     Real exchange = -closing;  // added to a along n, taken from b
-    const bool supported = contact_ || wedged_ || b->contact() || b->wedged();
-    if (supported && params.gravity != Real(0) && -closing < params.restSpeed) {
-      exchange = (params.restSpeed - closing) / Real(2);
+    const bool pressedTogether =
+        dot(Vec2<Real>(effectiveGravity(params) - b->effectiveGravity(params)), n) < Real(0);
+    if (pressedTogether && -closing < params.restSpeed) {
+      if (jammed) {
+        // One rests on the other with no room to bounce: both come to rest.
+        comeToRest(board, b->id());
+        b->comeToRest(board, this->id());
+        return;
+      }
+      exchange = (params.restSpeed - closing) / Real(2);  // the minimum bounce
       board.reportRule(ModelRule::MinimumBounce, this->id(), b->id());
+    } else if (jammed) {
+      // Both leave with the mean normal velocity; below restSpeed that is none at all, so a
+      // jam settles in a finite number of hits whatever the precision.
+      exchange = -closing / Real(2);
+      const Real mean = dot(va, n) - closing / Real(2);
+      if (absOf(mean) < params.restSpeed) {
+        va -= mean * n;
+        vb -= mean * n;
+      }
+      board.reportRule(ModelRule::Jammed, this->id(), b->id());
     }
     va += exchange * n;
     vb -= exchange * n;
@@ -145,18 +176,19 @@ class Ball final : public AbstractGizmo<Real> {
     const Vec2<Real> p = positionAt(now);
     Vec2<Real> v = velocityAt(now);
     const Real closing = dot(v - u, n);
-    // Touching without closing speed but accelerating into the surface counts as a slow hit:
-    // that is how a ball at rest on a floor comes to lie on it.
-    if (Real(0) < closing || (closing == Real(0) && !(dot(a_, n) < Real(0)))) return false;
-    const Vec2<Real> g(Real(0), params.gravity);
-    const bool pressed = dot(g, n) < Real(0);
+    // Touching and barely opening (under restSpeed) while accelerating into the surface counts
+    // as a slow hit: that is how a ball at rest on a floor comes to lie on it, and how a
+    // prediction a rounding error ahead of the present (a time that rounds to now) lands.
+    if (!(closing < Real(0)) && !(closing < params.restSpeed && dot(a_, n) < Real(0))) return false;
+    // Pressed by what actually accelerates the ball: gravity, less what a surface it slides on
+    // takes (sliding down an incline presses it into whatever stands at the bottom).
+    const bool pressed = dot(effectiveGravity(params), n) < Real(0);
+    const bool jammed = board.jammed();
     if (pressed && -closing < params.restSpeed) {
       if (type == SurfaceType::StaticSegment && surface) {
         if (contact_ && !(contact_->gizmo == surface->gizmo && contact_->feature == surface->feature)) {
           // Pressed onto a second surface while sliding on one: it rests in the corner.
-          wedged_ = true;
-          board.reportRule(ModelRule::Wedged, this->id(), surface->gizmo);
-          setState(now, p, Vec2<Real>(), params);
+          comeToRest(board, surface->gizmo);
           return true;
         }
         contact_ = *surface;
@@ -164,8 +196,16 @@ class Ball final : public AbstractGizmo<Real> {
         setState(now, p, v - dot(v, n) * n, params);
         return true;
       }
+      if (jammed) {
+        // Pressed slowly onto something round with no room to bounce: it rests there.
+        comeToRest(board, surface ? surface->gizmo : kNoGizmo);
+        return true;
+      }
       v += (params.restSpeed - closing) * n;
       board.reportRule(ModelRule::MinimumBounce, this->id(), kNoGizmo);
+    } else if (jammed) {
+      v -= closing * n;  // no rebound: the normal part of the relative velocity is gone
+      board.reportRule(ModelRule::Jammed, this->id(), surface ? surface->gizmo : kNoGizmo);
     } else {
       v -= ((Real(1) + c) * closing) * n;
     }
@@ -196,6 +236,13 @@ class Ball final : public AbstractGizmo<Real> {
     setState(now, p, v, params);
   }
 
+  // Wedged: at rest, without gravity, until something hits it.
+  void comeToRest(BoardAccess<Real>& board, GizmoId against) {
+    wedged_ = true;
+    board.reportRule(ModelRule::Wedged, this->id(), against);
+    setState(board.now(), positionAt(board.now()), Vec2<Real>(), board.params());
+  }
+
   void leaveContact(BoardAccess<Real>& board) {
     if (!contact_) return;
     board.reportRule(ModelRule::ContactEnd, this->id(), contact_->gizmo);
@@ -216,7 +263,7 @@ class Ball final : public AbstractGizmo<Real> {
     const std::array<Real, 5> pastB{s.length - u0, -du, -ddu, Real(0), Real(0)};
     std::optional<Real> best;
     for (const auto& c : {pastA, pastB}) {
-      const std::optional<Real> tau = math::firstEntry(c, Real(0), limit - now, [](const Real&) { return true; });
+      const std::optional<Real> tau = firstPolynomialEntry(c, Real(limit - now), [](const Real&) { return true; });
       if (tau && (!best || *tau < *best)) best = tau;
     }
     if (!best) return std::nullopt;
@@ -291,6 +338,12 @@ class Ball final : public AbstractGizmo<Real> {
   bool captured_ = false;
   bool wedged_ = false;
   std::optional<SurfaceContact<Real>> contact_;
+  // A jammed graze let through at `time` with ball `other` (see collide).
+  struct Graze {
+    GizmoId other;
+    Real time;
+  };
+  std::optional<Graze> grazed_;
 };
 
 }  // namespace gizmo

@@ -15,21 +15,35 @@ struct FeatureHit {
   std::int32_t feature;  // segments first, then circles
 };
 
-// skipFeature: the segment a ball slides on is no obstacle to it.
+// Whether circle c caps an end of segment s (a polygon's vertex, a capsule's end): the end
+// lies on the circle's rim.
+template <class Real>
+bool capsEndOf(const CircleFeature<Real>& c, const SegmentFeature<Real>& s) {
+  const Real tolerance = Real(64) * epsilonOf<Real>() * (Real(1) + c.radius);
+  return absOf(Real(length(s.a - c.centre) - c.radius)) <= tolerance ||
+         absOf(Real(length(s.b - c.centre) - c.radius)) <= tolerance;
+}
+
+// slidingOn: the segment a ball slides on. It is no obstacle to that ball, and neither are the
+// round features that cap its ends: the ball can only graze them tangentially while it slides
+// (rounding would turn the graze into a hit that the contact then cancels, for ever), and it
+// meets them as soon as the contact ends at either end.
 template <class Real>
 std::optional<FeatureHit<Real>> shapeTimeOfImpact(const Shape<Real>& shape, const Trajectory<Real>& t, const Real& r,
-                                                  const Real& limit, std::int32_t skipFeature) {
+                                                  const Real& limit, std::int32_t slidingOn) {
   std::optional<FeatureHit<Real>> best;
   auto consider = [&](const std::optional<Real>& tau, std::int32_t feature) {
     if (tau && (!best || *tau < best->tau)) best = FeatureHit<Real>{*tau, feature};
   };
+  const SegmentFeature<Real>* contact =
+      slidingOn >= 0 && std::size_t(slidingOn) < shape.segments.size() ? &shape.segments[std::size_t(slidingOn)] : nullptr;
   std::int32_t f = 0;
   for (const SegmentFeature<Real>& s : shape.segments) {
-    if (f != skipFeature) consider(segmentTimeOfImpact(t, r, s, best ? best->tau : limit), f);
+    if (f != slidingOn) consider(segmentTimeOfImpact(t, r, s, best ? best->tau : limit), f);
     ++f;
   }
   for (const CircleFeature<Real>& c : shape.circles) {
-    consider(circleTimeOfImpact(t, r, c, best ? best->tau : limit), f);
+    if (!contact || !capsEndOf(c, *contact)) consider(circleTimeOfImpact(t, r, c, best ? best->tau : limit), f);
     ++f;
   }
   return best;
