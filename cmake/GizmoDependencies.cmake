@@ -1,5 +1,7 @@
 # Every third-party library comes from Debian 12's packages (scripts/setup.sh installs them).
-find_package(Boost 1.74 REQUIRED)
+# The minimum Boost version is also written into the installed gizmoConfig.cmake.
+set(GIZMO_BOOST_MIN_VERSION 1.74)
+find_package(Boost ${GIZMO_BOOST_MIN_VERSION} REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(GMP REQUIRED IMPORTED_TARGET gmp)
 pkg_check_modules(MPFR REQUIRED IMPORTED_TARGET mpfr)

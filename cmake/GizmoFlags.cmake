@@ -8,8 +8,14 @@ target_compile_options(gizmo_flags INTERFACE -Wall -Wextra -ffp-contract=off)
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND CMAKE_CXX_COMPILER_VERSION VERSION_LESS 13)
   target_compile_options(gizmo_flags INTERFACE -Wno-restrict)
 endif()
+# gizmo_flags is build policy, not a usage requirement: targets link it as
+# $<BUILD_INTERFACE:gizmo_flags>, so it is never exported. What a consumer of the installed
+# libraries does need is declared on gizmo_core itself: -ffp-contract=off, and in a sanitized
+# build the sanitizer runtimes at link time (GIZMO_SANITIZER_LINK_OPTIONS).
+set(GIZMO_SANITIZER_LINK_OPTIONS "")
 if(GIZMO_SANITIZE)
+  set(GIZMO_SANITIZER_LINK_OPTIONS -fsanitize=address,undefined)
   target_compile_options(gizmo_flags INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
                                                -fno-sanitize-recover=undefined)
-  target_link_options(gizmo_flags INTERFACE -fsanitize=address,undefined)
+  target_link_options(gizmo_flags INTERFACE ${GIZMO_SANITIZER_LINK_OPTIONS})
 endif()

@@ -1,0 +1,93 @@
+# Helpers shared by the integration drivers (run with cmake -P).
+
+# The arguments after the first `--` on the cmake command line, as the list ${out}.
+function(gizmo_script_args out)
+  set(args "")
+  set(after FALSE)
+  math(EXPR last "${CMAKE_ARGC} - 1")
+  foreach(i RANGE ${last})
+    if(after)
+      list(APPEND args "${CMAKE_ARGV${i}}")
+    elseif(CMAKE_ARGV${i} STREQUAL "--")
+      set(after TRUE)
+    endif()
+  endforeach()
+  set(${out} "${args}" PARENT_SCOPE)
+endfunction()
+
+# Runs `${GIZMO} args...`; sets ${prefix}_COMMAND (the arguments), ${prefix}_EXIT,
+# ${prefix}_STDOUT and ${prefix}_STDERR.
+function(gizmo_run prefix)
+  execute_process(COMMAND ${GIZMO} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(${prefix}_COMMAND "${ARGN}" PARENT_SCOPE)
+  set(${prefix}_EXIT "${code}" PARENT_SCOPE)
+  set(${prefix}_STDOUT "${out}" PARENT_SCOPE)
+  set(${prefix}_STDERR "${err}" PARENT_SCOPE)
+endfunction()
+
+# Stops the script: what went wrong, then the command and everything it printed (the results of
+# gizmo_run(RUN ...)).
+function(gizmo_fail what)
+  string(JOIN " " command ${RUN_COMMAND})
+  message(FATAL_ERROR "${what}\ncommand: gizmo ${command}\nexit code: ${RUN_EXIT}\n"
+                      "--- stdout\n${RUN_STDOUT}--- stderr\n${RUN_STDERR}---")
+endfunction()
+
+# Checks that json is the output of `gizmo run --json`: every key, of the right type, and
+# events.total the sum of the counts of each kind.
+function(gizmo_check_run_json json)
+  macro(expect_type type)
+    string(JSON t ERROR_VARIABLE e TYPE "${json}" ${ARGN})
+    if(e OR NOT t STREQUAL "${type}")
+      string(JOIN "." key ${ARGN})
+      message(FATAL_ERROR "the JSON output's '${key}' should be ${type}: ${e}${t}\n${json}")
+    endif()
+  endmacro()
+  string(JSON members ERROR_VARIABLE e LENGTH "${json}")
+  if(e)
+    message(FATAL_ERROR "the output is not JSON: ${e}\n${json}")
+  endif()
+  expect_type(STRING model)
+  expect_type(STRING precision)
+  expect_type(NUMBER time)
+  expect_type(OBJECT events)
+  expect_type(NUMBER events total)
+  expect_type(ARRAY balls)
+  expect_type(NUMBER wall_seconds)
+
+  string(JSON kinds LENGTH "${json}" events)
+  math(EXPR lastKind "${kinds} - 1")
+  set(sum 0)
+  foreach(i RANGE ${lastKind})
+    string(JSON kind MEMBER "${json}" events ${i})
+    if(NOT kind STREQUAL "total")
+      expect_type(NUMBER events ${kind})
+      string(JSON n GET "${json}" events ${kind})
+      math(EXPR sum "${sum} + ${n}")
+    endif()
+  endforeach()
+  string(JSON total GET "${json}" events total)
+  if(NOT sum EQUAL total)
+    message(FATAL_ERROR "events.total is ${total}, but the counts of each kind add up to ${sum}\n${json}")
+  endif()
+
+  string(JSON balls LENGTH "${json}" balls)
+  if(balls EQUAL 0)
+    message(FATAL_ERROR "the JSON output lists no ball\n${json}")
+  endif()
+  math(EXPR lastBall "${balls} - 1")
+  foreach(i RANGE ${lastBall})
+    expect_type(OBJECT balls ${i})
+    expect_type(STRING balls ${i} name)
+    foreach(key x y vx vy)
+      expect_type(NUMBER balls ${i} ${key})
+    endforeach()
+    expect_type(BOOLEAN balls ${i} captured)
+  endforeach()
+endfunction()
+
+# The JSON output without its one line that may differ between runs, wall_seconds.
+function(gizmo_without_wall_seconds out json)
+  string(REGEX REPLACE "\n *\"wall_seconds\": [^\n]*" "" stripped "${json}")
+  set(${out} "${stripped}" PARENT_SCOPE)
+endfunction()
