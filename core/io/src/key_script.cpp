@@ -10,11 +10,6 @@ namespace {
 
 using namespace detail;
 
-struct Token {
-  std::string_view text;
-  int column = 0;
-};
-
 
 }  // namespace
 
@@ -37,27 +32,10 @@ std::vector<KeyInput> readKeyScript(std::string_view content, const std::string&
     const bool last = nl == std::string_view::npos;
     auto at = [&](int column) { return SourcePos{line, column}; };
     [&] {
-      if (text.size() > kMaxLineBytes) {
-        rep.error(at(1), "the line is longer than 65536 bytes");
-        return;
-      }
-      for (std::size_t i = 0; i < text.size(); ++i) {
-        const unsigned char c = static_cast<unsigned char>(text[i]);
-        if ((c < 0x20 && c != '\t') || c == 0x7F) {
-          rep.error(at(static_cast<int>(i) + 1), controlCharacterProblem(c));
-          return;
-        }
-      }
-      std::vector<Token> t;
-      for (std::size_t i = 0; i < text.size();) {
-        if (text[i] == ' ' || text[i] == '\t') {
-          ++i;
-          continue;
-        }
-        const std::size_t start = i;
-        while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
-        t.push_back(Token{text.substr(start, i - start), static_cast<int>(start) + 1});
-      }
+      const std::optional<std::vector<Token>> tokens =
+          tokenizeLine(text, line, rep, "the line is longer than 65536 bytes");
+      if (!tokens) return;
+      const std::vector<Token>& t = *tokens;
       if (t.empty() || t[0].text[0] == '#') return;
       if (t.size() < 3) {
         rep.error(at(t[0].column), "a key input is TIME down|up KEYCODE (for example '1.25 down 32'); this line has " +

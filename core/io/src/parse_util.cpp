@@ -229,4 +229,30 @@ void rejectNul(std::string_view content, const std::string& file) {
   fail(file, LineIndex(content).position(nul), "the file contains a NUL byte: it is not a text file");
 }
 
+std::optional<std::vector<Token>> tokenizeLine(std::string_view text, int line, Reporter& rep,
+                                               const std::string& tooLong) {
+  if (text.size() > kMaxLineBytes) {
+    rep.error(SourcePos{line, 1}, tooLong);
+    return std::nullopt;
+  }
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if ((c < 0x20 && c != '\t') || c == 0x7F) {
+      rep.error(SourcePos{line, static_cast<int>(i) + 1}, controlCharacterProblem(c));
+      return std::nullopt;
+    }
+  }
+  std::vector<Token> tokens;
+  for (std::size_t i = 0; i < text.size();) {
+    if (text[i] == ' ' || text[i] == '\t') {
+      ++i;
+      continue;
+    }
+    const std::size_t start = i;
+    while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
+    tokens.push_back(Token{text.substr(start, i - start), static_cast<int>(start) + 1});
+  }
+  return tokens;
+}
+
 }  // namespace gizmo::io::detail

@@ -2,6 +2,7 @@
 // Internal to gizmo::io: what the readers share (limits, numbers, names, positions, diagnostics).
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -65,6 +66,20 @@ class LineIndex {
 
 // Collects a reader's errors (keeping the kMaxReportedErrors earliest by position) and its
 // lenient-reading warnings (one per kind, at the first place, with a count).
+class Reporter;
+
+// One word of a line and the column it starts at (1-based).
+struct Token {
+  std::string_view text;
+  int column = 0;
+};
+
+// Splits one line (its line end already removed) at spaces and tabs. A line longer than
+// kMaxLineBytes or holding a control character is reported (at `line`) and gives nullopt;
+// `tooLong` is the message for the first.
+std::optional<std::vector<Token>> tokenizeLine(std::string_view text, int line, Reporter& rep,
+                                               const std::string& tooLong);
+
 class Reporter {
  public:
   explicit Reporter(std::string file) : file_(std::move(file)) {}

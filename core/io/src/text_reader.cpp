@@ -15,11 +15,6 @@ namespace {
 
 using namespace detail;
 
-struct Token {
-  std::string_view text;
-  int column = 0;
-};
-
 enum class Cmd { Gizmo, Absorber, Ball, Rotate, Delete, Move, Connect, KeyConnect, Gravity, Friction };
 
 struct CommandInfo {
@@ -97,27 +92,10 @@ class TextReader {
       rep_.lenient("crlf", SourcePos{line_, static_cast<int>(text.size()) + 1},
                    "Windows line ending (CR LF) read as a plain line end");
     }
-    if (text.size() > kMaxLineBytes) {
-      rep_.error(SourcePos{line_, 1}, "the line is longer than 65536 bytes; no board line is that long");
-      return;
-    }
-    for (std::size_t i = 0; i < text.size(); ++i) {
-      const unsigned char c = static_cast<unsigned char>(text[i]);
-      if ((c < 0x20 && c != '\t') || c == 0x7F) {
-        rep_.error(SourcePos{line_, static_cast<int>(i) + 1}, controlCharacterProblem(c));
-        return;
-      }
-    }
-    std::vector<Token> t;
-    for (std::size_t i = 0; i < text.size();) {
-      if (text[i] == ' ' || text[i] == '\t') {
-        ++i;
-        continue;
-      }
-      const std::size_t start = i;
-      while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
-      t.push_back(Token{text.substr(start, i - start), static_cast<int>(start) + 1});
-    }
+    const std::optional<std::vector<Token>> tokens =
+        tokenizeLine(text, line_, rep_, "the line is longer than 65536 bytes; no board line is that long");
+    if (!tokens) return;
+    const std::vector<Token>& t = *tokens;
     if (t.empty()) return;
     if (t[0].text[0] == '#') {
       rep_.lenient("comment", at(t[0]), "'#' comment lines are not part of the standard format; ignored");

@@ -12,15 +12,15 @@
 namespace gizmo {
 
 template <class Real>
-class Flipper final : public AbstractGizmo<Real> {
+class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
  public:
-  explicit Flipper(const GizmoSpec& spec) : AbstractGizmo<Real>(spec.name), spec_(spec) { layOut(); }
+  explicit Flipper(const GizmoSpec& spec) : GridPlaced<AbstractGizmo<Real>>(spec, spec.name) { layOut(); }
 
   static Real swingTime() { return Real(1) / Real(12); }
   static Real coefficient() { return fromDouble<Real>(0.95); }
 
   GizmoKind kind() const override {
-    return spec_.type == GizmoType::LeftFlipper ? GizmoKind::LeftFlipper : GizmoKind::RightFlipper;
+    return this->placement().type == GizmoType::LeftFlipper ? GizmoKind::LeftFlipper : GizmoKind::RightFlipper;
   }
 
   CollisionAnswer canCollideWith(const AbstractGizmo<Real>& other) const override {
@@ -136,32 +136,20 @@ class Flipper final : public AbstractGizmo<Real> {
   }
 
   Box<Real> bounds() const override {
-    const Vec2<Real> o(Real(spec_.x), Real(spec_.y));
+    const Vec2<Real> o(Real(this->placement().x), Real(this->placement().y));
     return Box<Real>{o, o + Vec2<Real>(Real(2), Real(2))};
-  }
-
-  GizmoSpec spec() const override {
-    GizmoSpec s = spec_;
-    s.name = this->name();
-    return s;
-  }
-  std::vector<std::string> propertyNames() const override { return gridPropertyNames(spec_); }
-  std::optional<PropertyValue> property(std::string_view name) const override { return gridProperty(spec(), name); }
-  bool setPropertyUnchecked(std::string_view name, const PropertyValue& value) override {
-    GizmoSpec s = spec();
-    if (!setGridProperty(s, name, value)) return false;
-    spec_ = s;
-    this->rename(s.name);
-    layOut();
-    return true;
   }
 
   const Shape<Real>& stillShape() const { return stillShape_; }
 
+ protected:
+  void placed() override { layOut(); }
+
  private:
   void layOut() {
-    layout_ = flipperLayout(spec_.type, spec_.orientation);
-    pivot_ = Vec2<Real>(Real(spec_.x), Real(spec_.y)) + toReal<Real>(layout_.pivot);
+    const GizmoSpec& s = this->placement();
+    layout_ = flipperLayout(s.type, s.orientation);
+    pivot_ = Vec2<Real>(Real(s.x), Real(s.y)) + toReal<Real>(layout_.pivot);
     anchor(t0_, Real(0), 0);
   }
 
@@ -203,7 +191,6 @@ class Flipper final : public AbstractGizmo<Real> {
     board.markForRecompute(this->id());
   }
 
-  GizmoSpec spec_;
   FlipperLayout layout_{};
   Vec2<Real> pivot_;
   Real t0_{0}, s0_{0};

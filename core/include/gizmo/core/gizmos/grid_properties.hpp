@@ -64,4 +64,36 @@ inline bool setGridProperty(GizmoSpec& s, std::string_view name, const PropertyV
   return true;
 }
 
+// A gizmo that stands on the grid and is described by a GizmoSpec: the property system for
+// every such gizmo, over whichever gizmo base it extends. `placed()` tells the gizmo its spec
+// changed (it lays out its shape again).
+template <class Base>
+class GridPlaced : public Base {
+ public:
+  GizmoSpec spec() const override {
+    GizmoSpec s = spec_;
+    s.name = this->name();
+    return s;
+  }
+  std::vector<std::string> propertyNames() const override { return gridPropertyNames(spec_); }
+  std::optional<PropertyValue> property(std::string_view name) const override { return gridProperty(spec(), name); }
+  bool setPropertyUnchecked(std::string_view name, const PropertyValue& value) override {
+    GizmoSpec s = spec();
+    if (!setGridProperty(s, name, value)) return false;
+    spec_ = s;
+    this->rename(s.name);
+    placed();
+    return true;
+  }
+
+ protected:
+  template <class... BaseArgs>
+  explicit GridPlaced(const GizmoSpec& spec, BaseArgs&&... args) : Base(std::forward<BaseArgs>(args)...), spec_(spec) {}
+  const GizmoSpec& placement() const { return spec_; }
+  virtual void placed() = 0;
+
+ private:
+  GizmoSpec spec_;
+};
+
 }  // namespace gizmo

@@ -59,37 +59,22 @@ class AbstractGizmoWithPolygonalGeometry : public AbstractGizmo<Real> {
 
 // A polygonal gizmo that stands on the grid and is described by a GizmoSpec.
 template <class Real>
-class GridBumper : public AbstractGizmoWithPolygonalGeometry<Real> {
+class GridBumper : public GridPlaced<AbstractGizmoWithPolygonalGeometry<Real>> {
  public:
   explicit GridBumper(const GizmoSpec& spec)
-      : AbstractGizmoWithPolygonalGeometry<Real>(spec.name, restShape<Real>(spec), Real(1)), spec_(spec) {}
+      : GridPlaced<AbstractGizmoWithPolygonalGeometry<Real>>(spec, spec.name, restShape<Real>(spec), Real(1)) {}
 
   GizmoKind kind() const override {
-    switch (spec_.type) {
+    switch (this->placement().type) {
       case GizmoType::Square: return GizmoKind::Square;
       case GizmoType::Circle: return GizmoKind::Circle;
       case GizmoType::Triangle: return GizmoKind::Triangle;
       default: return GizmoKind::Absorber;
     }
   }
-  GizmoSpec spec() const override {
-    GizmoSpec s = spec_;
-    s.name = this->name();
-    return s;
-  }
-  std::vector<std::string> propertyNames() const override { return gridPropertyNames(spec_); }
-  std::optional<PropertyValue> property(std::string_view name) const override { return gridProperty(spec(), name); }
-  bool setPropertyUnchecked(std::string_view name, const PropertyValue& value) override {
-    GizmoSpec s = spec();
-    if (!setGridProperty(s, name, value)) return false;
-    spec_ = s;
-    this->rename(s.name);
-    this->setShape(restShape<Real>(spec_));
-    return true;
-  }
 
- private:
-  GizmoSpec spec_;
+ protected:
+  void placed() override { this->setShape(restShape<Real>(this->placement())); }
 };
 
 // Square, circle and triangle bumpers: coefficient 1, a trigger, no action.
