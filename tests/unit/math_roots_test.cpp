@@ -15,6 +15,7 @@
 
 #include "gizmo/core/geometry/vec2.hpp"
 #include "gizmo/core/math/trig.hpp"
+#include "support/scalar_fixture.hpp"
 
 namespace {
 
@@ -153,20 +154,8 @@ double distance(const Real& x, const MpfrReal& reference) {
   return std::fabs(static_cast<double>(d));
 }
 
-template <class Real>
-class MpfrAware : public ::testing::Test {
- protected:
-  void SetUp() override {
-    saved_ = MpfrReal::default_precision();
-    if constexpr (std::is_same_v<Real, MpfrReal>) gizmo::setMpfrBits(128);
-  }
-  void TearDown() override { MpfrReal::default_precision(saved_); }
-
- private:
-  unsigned saved_ = 0;
-};
-
-using Scalars = ::testing::Types<float, double, long double, Float128, MpfrReal>;
+using gizmo::test::MpfrAware;
+using gizmo::test::Scalars;
 
 // ---------------------------------------------------------------------------------------------
 // firstEntry: polynomial gaps
@@ -597,9 +586,10 @@ FlipperScenario dipScenario() {
   return FlipperScenario::make(0.05005, 0.3, 15.0, 1.0, 0.25 - 1e-6, 0.25, 0.0, 2000.0, 0.0);
 }
 
-TYPED_TEST(FirstEntrySmooth, FlipperHit) {
-  using Real = TypeParam;
-  const FlipperScenario s = hitScenario();
+// Solves a scenario with exactly one entry in [0, 0.1] and checks it against the MPFR reference
+// to the root tolerance implied by the gap's slope there.
+template <class Real>
+void expectSingleSmoothEntry(const FlipperScenario& s, double slopeAtEntry, const char* what) {
   const auto reference = referenceEntries([&](long double t) { return s.sampled(t); },
                                           [&](const MpfrReal& t) { return s.exact(t); }, 0.0, 0.1,
                                           100000);
@@ -611,30 +601,16 @@ TYPED_TEST(FirstEntrySmooth, FlipperHit) {
   ASSERT_TRUE(got.has_value());
   EXPECT_FALSE(info.capped);
   const double error = distance(*got, reference[0]);
-  EXPECT_LE(error, rootTolerance<Real>(5.0)) << "root " << gizmo::toDouble(*got);
-  std::cout << "[ smooth ] " << gizmo::scalarName<Real>() << ": hit at " << gizmo::toDouble(*got)
+  EXPECT_LE(error, rootTolerance<Real>(slopeAtEntry)) << "root " << gizmo::toDouble(*got);
+  std::cout << "[ smooth ] " << gizmo::scalarName<Real>() << ": " << what << " at " << gizmo::toDouble(*got)
             << ", error " << error << " s, " << info.evaluations << " evaluations\n";
 }
 
+TYPED_TEST(FirstEntrySmooth, FlipperHit) { expectSingleSmoothEntry<TypeParam>(hitScenario(), 5.0, "hit"); }
+
+// At the entry the slope is about sqrt(2 * 1e-6 * 2000) = 0.063.
 TYPED_TEST(FirstEntrySmooth, ShortDipIsFound) {
-  using Real = TypeParam;
-  const FlipperScenario s = dipScenario();
-  const auto reference = referenceEntries([&](long double t) { return s.sampled(t); },
-                                          [&](const MpfrReal& t) { return s.exact(t); }, 0.0, 0.1,
-                                          100000);
-  ASSERT_EQ(reference.size(), 1u);
-  const FlipperGap<Real> gap(s);
-  gm::SmoothSearchInfo info;
-  const auto got = gm::firstEntrySmooth(gap, Real(0), Real(fd<Real>(0.1)),
-                                        [](const Real&) { return true; }, &info);
-  ASSERT_TRUE(got.has_value());
-  EXPECT_FALSE(info.capped);
-  // At the entry the slope is about sqrt(2 * 1e-6 * 2000) = 0.063.
-  const double error = distance(*got, reference[0]);
-  EXPECT_LE(error, rootTolerance<Real>(0.063)) << "root " << gizmo::toDouble(*got);
-  std::cout << "[ smooth ] " << gizmo::scalarName<Real>() << ": dip entry at "
-            << gizmo::toDouble(*got) << ", error " << error << " s, " << info.evaluations
-            << " evaluations\n";
+  expectSingleSmoothEntry<TypeParam>(dipScenario(), 0.063, "dip entry");
 }
 
 TEST(FirstEntrySmoothScenario, CoarseSamplingMissesTheDip) {

@@ -1,5 +1,6 @@
 // sinCos against MPFR's own correctly rounded sin and cos, for every scalar of the ladder.
 #include "gizmo/core/math/trig.hpp"
+#include "support/scalar_fixture.hpp"
 
 #include <gtest/gtest.h>
 
@@ -112,20 +113,8 @@ std::vector<Real> samplePoints(int randomCount) {
 }
 
 template <class Real>
-class SinCosTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    savedDigits_ = MpfrReal::default_precision();
-    if constexpr (std::is_same_v<Real, MpfrReal>) gizmo::setMpfrBits(128);
-  }
-  void TearDown() override { MpfrReal::default_precision(savedDigits_); }
-
- private:
-  unsigned savedDigits_ = 0;
-};
-
-using Scalars = ::testing::Types<float, double, long double, Float128, MpfrReal>;
-TYPED_TEST_SUITE(SinCosTest, Scalars);
+class SinCosTest : public gizmo::test::MpfrAware<Real> {};
+TYPED_TEST_SUITE(SinCosTest, gizmo::test::Scalars);
 
 template <class Real>
 int randomCountFor() {
