@@ -1,5 +1,5 @@
-// Loading boards: the specification's example, and crowded boards of 100 balls and ~400 gizmos,
-// from text and from XML.
+// Loading boards: the specification's example, 300 gizmos with 100 balls, and 400 gizmos (every
+// cell), from text and from XML.
 #include <benchmark/benchmark.h>
 
 #include "bench_boards.hpp"
@@ -9,8 +9,8 @@
 namespace gizmo::bench {
 namespace {
 
-// 400 one-cell gizmos filling rows 0–19 except the ball lanes, and 100 balls in those lanes.
-BoardSpec fourHundredGizmos() {
+// 300 one-cell gizmos, and 100 balls in every fourth column.
+BoardSpec gizmosAndHundredBalls() {
   BoardSpec s;
   int n = 0, b = 0;
   for (int y = 0; y < 20; ++y)
@@ -24,6 +24,22 @@ BoardSpec fourHundredGizmos() {
       g.name = "G" + std::to_string(n++);
       g.x = x;
       g.y = y;
+      s.gizmos.push_back(g);
+    }
+  return s;
+}
+
+// Every one of the 400 cells holds a gizmo.
+BoardSpec fullGrid() {
+  BoardSpec s;
+  for (int y = 0; y < 20; ++y)
+    for (int x = 0; x < 20; ++x) {
+      GizmoSpec g;
+      g.type = (x + y) % 3 == 0 ? GizmoType::Triangle : (x + y) % 3 == 1 ? GizmoType::Square : GizmoType::Circle;
+      g.name = "G" + std::to_string(y * 20 + x);
+      g.x = x;
+      g.y = y;
+      g.orientation = 90 * ((x * 3 + y) % 4);
       s.gizmos.push_back(g);
     }
   return s;
@@ -43,12 +59,16 @@ void loadXml(benchmark::State& state, const BoardSpec& board) {
 }
 
 void BM_LoadSpecExampleText(benchmark::State& s) { loadText(s, specExample()); }
-void BM_LoadCrowdedText(benchmark::State& s) { loadText(s, fourHundredGizmos()); }
-void BM_LoadCrowdedXml(benchmark::State& s) { loadXml(s, fourHundredGizmos()); }
+void BM_LoadCrowdedText(benchmark::State& s) { loadText(s, gizmosAndHundredBalls()); }
+void BM_LoadCrowdedXml(benchmark::State& s) { loadXml(s, gizmosAndHundredBalls()); }
+void BM_LoadFullGridText(benchmark::State& s) { loadText(s, fullGrid()); }
+void BM_LoadFullGridXml(benchmark::State& s) { loadXml(s, fullGrid()); }
 
 BENCHMARK(BM_LoadSpecExampleText)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LoadCrowdedText)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LoadCrowdedXml)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LoadFullGridText)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LoadFullGridXml)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace gizmo::bench
