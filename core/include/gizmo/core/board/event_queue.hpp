@@ -68,9 +68,13 @@ class EventQueue {
       if (s.serial != h.serial || !s.alive) continue;
       s.alive = false;
       --aliveCount_;
+      ++deadInHeap_;
       onRemoved(s.event);
     }
     list.clear();
+    // Dead events wait in the heap until they reach the top; when they outnumber the live ones,
+    // sweep them out so the heap stays about as small as the queue.
+    if (deadInHeap_ > aliveCount_ + 64) compact();
   }
 
   // Every live event, earliest first (for inspection and tests; O(n log n)).
@@ -88,6 +92,7 @@ class EventQueue {
     freeSlots_.clear();
     byGizmo_.clear();
     aliveCount_ = 0;
+    deadInHeap_ = 0;
   }
 
  private:
@@ -144,7 +149,18 @@ class EventQueue {
     while (!slots_[heap_.front()].alive) {
       freeSlots_.push_back(heap_.front());
       removeTop();
+      --deadInHeap_;
     }
+  }
+  void compact() {
+    std::size_t kept = 0;
+    for (std::uint32_t slot : heap_) {
+      if (slots_[slot].alive) heap_[kept++] = slot;
+      else freeSlots_.push_back(slot);
+    }
+    heap_.resize(kept);
+    for (std::size_t i = kept / 2; i-- > 0;) siftDown(i);
+    deadInHeap_ = 0;
   }
 
   std::vector<Slot> slots_;
@@ -152,6 +168,7 @@ class EventQueue {
   std::vector<std::uint32_t> freeSlots_;
   std::vector<std::vector<Handle>> byGizmo_;
   std::size_t aliveCount_ = 0;
+  std::size_t deadInHeap_ = 0;
   std::uint64_t nextSequence_ = 0;
 };
 

@@ -283,9 +283,12 @@ std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, con
   detail::RootList<Real> direct;
   if (g.degree == 1) direct.addIfNew(Real(-c[0] / c[1]));
   if (g.degree == 2) detail::quadraticRoots(c[2], c[1], c[0], direct);
-  auto guessIn = [&](const Real& a, const Real& b) -> std::optional<Real> {
+  // Beyond degree 2 the secant through the piece's ends starts the search: on a monotone piece
+  // it is usually close, and the bracketed search still decides.
+  auto guessIn = [&](const Real& a, const Real& b, const Real& ga, const Real& gb) -> std::optional<Real> {
     for (int k = 0; k < direct.n; ++k)
       if (a <= direct.t[k] && direct.t[k] <= b) return direct.t[k];
+    if (g.degree > 2 && gb < ga) return Real(a + ga * (b - a) / (ga - gb));
     return std::nullopt;
   };
   Real a = lo;
@@ -298,7 +301,7 @@ std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, con
                              : detail::solveEntry(
                                    [&g](const Real& x) -> Real { return g.value(x); },
                                    [&g](const Real& x) -> Real { return g.slope(x); }, a, b, gb,
-                                   guessIn(a, b));
+                                   guessIn(a, b, ga, gb));
       if (accept(t)) return t;
     }
     a = b;
