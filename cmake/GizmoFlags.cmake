@@ -1,6 +1,6 @@
 # Flags every gizmo target gets, through the interface target gizmo_flags.
-# Determinism: no FMA contraction (gcc's default in GNU mode is -ffp-contract=fast), no
-# -ffast-math, no -march: the simulator's doubles must be the same bits on every x86-64.
+# Determinism: no FMA contraction (gcc's default in GNU mode is -ffp-contract=fast), no fast-math
+# and no CPU-specific code generation: the simulator's doubles must be the same bits on every x86-64.
 add_library(gizmo_flags INTERFACE)
 target_compile_options(gizmo_flags INTERFACE -Wall -Wextra -ffp-contract=off)
 # g++ 12 warns -Wrestrict inside libstdc++ for `"text" + std::string` at -O2 (GCC PR 105651, a

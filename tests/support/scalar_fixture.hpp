@@ -3,6 +3,7 @@
 // thread's MPFR precision afterwards.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <type_traits>
 
 #include "gizmo/core/math/scalar.hpp"
@@ -23,5 +24,16 @@ class MpfrAware : public ::testing::Test {
 };
 
 using Scalars = ::testing::Types<float, double, long double, Float128, MpfrReal>;
+
+// Three doubles that add up to x exactly: each remainder is exact and narrower than the last.
+// Lets tests carry a float128 into MPFR without rounding.
+inline std::array<double, 3> splitFloat128(const Float128& x) {
+  __float128 q = x.backend().value();
+  const double d1 = static_cast<double>(q);
+  q -= d1;
+  const double d2 = static_cast<double>(q);
+  q -= d2;
+  return {d1, d2, static_cast<double>(q)};
+}
 
 }  // namespace gizmo::test

@@ -86,15 +86,10 @@ MpfrReal toBig(float x) { return MpfrReal(static_cast<double>(x)); }
 MpfrReal toBig(double x) { return MpfrReal(x); }
 MpfrReal toBig(long double x) { return MpfrReal(x); }
 MpfrReal toBig(const Float128& x) {
-  __float128 q = x.backend().value();
-  const double d1 = static_cast<double>(q);
-  q -= d1;
-  const double d2 = static_cast<double>(q);
-  q -= d2;
-  const double d3 = static_cast<double>(q);
-  MpfrReal r = d1;
-  r = r + MpfrReal(d2);
-  r = r + MpfrReal(d3);
+  const std::array<double, 3> d = gizmo::test::splitFloat128(x);
+  MpfrReal r = d[0];
+  r = r + MpfrReal(d[1]);
+  r = r + MpfrReal(d[2]);
   return r;
 }
 MpfrReal toBig(const MpfrReal& x) {

@@ -35,16 +35,10 @@ void assign(Big& dst, float x) { mpfr_set_flt(dst.get(), x, MPFR_RNDN); }
 void assign(Big& dst, double x) { mpfr_set_d(dst.get(), x, MPFR_RNDN); }
 void assign(Big& dst, long double x) { mpfr_set_ld(dst.get(), x, MPFR_RNDN); }
 void assign(Big& dst, const Float128& x) {
-  // Three doubles hold a float128 exactly: each remainder is exact and narrower than the last.
-  __float128 q = x.backend().value();
-  const double d1 = static_cast<double>(q);
-  q -= d1;
-  const double d2 = static_cast<double>(q);
-  q -= d2;
-  const double d3 = static_cast<double>(q);
-  mpfr_set_d(dst.get(), d1, MPFR_RNDN);
-  mpfr_add_d(dst.get(), dst.get(), d2, MPFR_RNDN);
-  mpfr_add_d(dst.get(), dst.get(), d3, MPFR_RNDN);
+  const std::array<double, 3> d = gizmo::test::splitFloat128(x);
+  mpfr_set_d(dst.get(), d[0], MPFR_RNDN);
+  mpfr_add_d(dst.get(), dst.get(), d[1], MPFR_RNDN);
+  mpfr_add_d(dst.get(), dst.get(), d[2], MPFR_RNDN);
 }
 void assign(Big& dst, const MpfrReal& x) { mpfr_set(dst.get(), x.backend().data(), MPFR_RNDN); }
 
