@@ -2,6 +2,7 @@
 // The core's templates, compiled once per scalar: each instantiate_*.cpp names one scalar.
 #include "gizmo/core/board/build_board_impl.hpp"
 #include "gizmo/core/board/game_board_impl.hpp"
+#include "gizmo/core/board/game_board_state_impl.hpp"
 
 #define GIZMO_INSTANTIATE_CORE(Real)                                                    \
   namespace gizmo {                                                                      \

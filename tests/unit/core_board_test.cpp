@@ -30,7 +30,7 @@ const Recorder<double>::Executed* firstCollisionOf(const Recorder<double>& r, Gi
 }
 
 double speedBefore(const Recorder<double>::Executed& e, GizmoId ball) {
-  for (const auto& c : e.outcome.balls)
+  for (const auto& c : e.outcome.balls())
     if (c.ball == ball) return length(c.velocityBefore);
   return -1;
 }
@@ -162,7 +162,7 @@ Vec2<double> velocityAfterFirstHit(const BoardSpec& s, const std::string& ball, 
   const GizmoId id = *board->find(ball);
   for (const auto& e : rec.executed)
     if (e.event.kind == EventKind::Collision)
-      for (const auto& c : e.outcome.balls)
+      for (const auto& c : e.outcome.balls())
         if (c.ball == id) return c.velocityAfter;
   ADD_FAILURE() << "no collision";
   return {};

@@ -86,6 +86,27 @@ class EventQueue {
     return out;
   }
 
+  // Every live event in scheduling order, and the sequence number the next one will get: all
+  // that decides what the queue does from here on (its heap layout does not).
+  std::vector<Event<Real>> liveInSequenceOrder() const {
+    std::vector<Event<Real>> out;
+    for (const Slot& s : slots_)
+      if (s.alive) out.push_back(s.event);
+    std::sort(out.begin(), out.end(), [](const Event<Real>& x, const Event<Real>& y) { return x.sequence < y.sequence; });
+    return out;
+  }
+  std::uint64_t nextSequence() const { return nextSequence_; }
+
+  // Refills the queue with events saved by liveInSequenceOrder, keeping their sequence numbers.
+  void restore(const std::vector<Event<Real>>& events, std::uint64_t nextSequence) {
+    clear();
+    for (const Event<Real>& e : events) {
+      nextSequence_ = e.sequence;
+      push(e);
+    }
+    nextSequence_ = nextSequence;
+  }
+
   void clear() {
     slots_.clear();
     heap_.clear();

@@ -2,6 +2,7 @@
 // The seed's GameBoard: a composite of gizmos (the ball among them), the triggers between
 // them, and the discrete-event queue that simulates them, kept between ticks.
 #include <array>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "gizmo/core/board/board_state.hpp"
 #include "gizmo/core/board/event_queue.hpp"
 #include "gizmo/core/board/observer.hpp"
 #include "gizmo/core/board/physics_params.hpp"
@@ -58,6 +60,28 @@ class GameBoard final : private BoardAccess<Real> {
   // --- running ----------------------------------------------------------------------------------
   // Seed: simulate `time` seconds, in ticks no longer than the maximum tick length.
   void tick(const Real& time);
+  // The ticks first, first + 1, … of a span of ticks that began at `start`: tick k ends at
+  // start + k·maxTick (counted, not summed), the last at `end`. tick(time) is the span from now
+  // to now + time; a run resumed from a saved state carries on its span where it stopped.
+  void tickSpan(const Real& start, std::int64_t first, const Real& end);
+
+  // Stops a run early, for looking at a moment of it: before the first event later than
+  // `time`, or once `events` events have run in all. A stopped board is not meant to go on.
+  struct RunLimit {
+    std::uint64_t events = std::numeric_limits<std::uint64_t>::max();
+    std::optional<Real> time;
+  };
+  void setRunLimit(const RunLimit& limit) {
+    limit_ = limit;
+    limited_ = true;
+  }
+  bool stopped() const { return stopped_; }
+
+  // Everything that changes as the board runs (board_state.hpp). restoreState puts a saved
+  // state back onto a board built from the same spec with the same inputs; it checks that the
+  // state fits the board and throws StateError if not (the board is then not to be used).
+  BoardState<Real> saveState() const;
+  void restoreState(const BoardState<Real>& state);
   // A key pressed or released at board time `time` (≥ now): key triggers perform their actions
   // then, in the queue's order. Inputs are part of a run's data.
   void scheduleInput(const Real& time, int key, KeyDirection direction);
@@ -80,7 +104,7 @@ class GameBoard final : private BoardAccess<Real> {
   // Live events, earliest first.
   std::vector<Event<Real>> pendingEvents() const { return queue_.snapshot(); }
   const std::array<std::uint64_t, kEventKindCount>& executedCounts() const { return executed_; }
-  std::uint64_t executedTotal() const;
+  std::uint64_t executedTotal() const { return executedTotal_; }
 
   // Mechanical energy per unit mass: ½|v|² + g (20 − y), summed over free balls.
   Real energy() const;
@@ -102,6 +126,7 @@ class GameBoard final : private BoardAccess<Real> {
   bool jammed() const override { return collisionsInWindow_ > kJamThreshold; }
 
   void rebuild();
+  void checkRestoredEvent(const Event<Real>& e, const BoardState<Real>& state) const;
   void tickUntil(const Real& end);
   void advanceTo(const Real& t);
   void execute(const Event<Real>& e);
@@ -149,6 +174,10 @@ class GameBoard final : private BoardAccess<Real> {
   std::vector<GizmoId> recompute_;
   std::vector<GizmoId> candidates_;
   std::array<std::uint64_t, kEventKindCount> executed_{};
+  std::uint64_t executedTotal_ = 0;
+  RunLimit limit_;
+  bool limited_ = false;
+  bool stopped_ = false;
   std::uint64_t eventsThisInstant_ = 0;
   // The jam rule: more than kJamThreshold collisions within kJamWindow seconds of board time
   // (counted from the first of them) leave no rebound.

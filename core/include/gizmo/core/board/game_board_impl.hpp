@@ -87,12 +87,6 @@ Ball<Real>& GameBoard<Real>::ballById(GizmoId id) {
   return *b;
 }
 
-template <class Real>
-std::uint64_t GameBoard<Real>::executedTotal() const {
-  std::uint64_t total = 0;
-  for (std::uint64_t n : executed_) total += n;
-  return total;
-}
 
 template <class Real>
 Real GameBoard<Real>::energy() const {
@@ -170,16 +164,22 @@ void GameBoard<Real>::scheduleInput(const Real& time, int key, KeyDirection dire
 // ends exactly at start + time.
 template <class Real>
 void GameBoard<Real>::tick(const Real& time) {
+  const Real start = now_;
+  tickSpan(start, 1, start + time);
+}
+
+template <class Real>
+void GameBoard<Real>::tickSpan(const Real& start, std::int64_t first, const Real& end) {
   rebuild();
-  const Real start = now_, end = now_ + time;
-  if (!(start < end)) return;
-  for (std::int64_t k = 1;; ++k) {
+  if (!(now_ < end) || stopped_) return;
+  for (std::int64_t k = first;; ++k) {
     const Real next = start + Real(k) * params_.maxTick;
     if (!(next < end)) {
       tickUntil(end);
       return;
     }
     tickUntil(next);
+    if (stopped_) return;
   }
 }
 
@@ -192,6 +192,10 @@ void GameBoard<Real>::tickUntil(const Real& end) {
     schedule(EventKind::Input, in.time, kNoGizmo, static_cast<GizmoId>(in.direction), in.key);
   }
   for (;;) {
+    if (limited_ && (limit_.events <= executedTotal_ || (limit_.time && *limit_.time < queue_.top().time))) {
+      stopped_ = true;
+      return;
+    }
     const Event<Real> e = queue_.pop();
     advanceTo(e.time);
     execute(e);
@@ -223,11 +227,12 @@ void GameBoard<Real>::advanceTo(const Real& t) {
 template <class Real>
 void GameBoard<Real>::execute(const Event<Real>& e) {
   ++executed_[static_cast<std::size_t>(e.kind)];
+  ++executedTotal_;
   EventOutcome<Real> outcome;
   auto before = [&](GizmoId id) {
     if (!observer_ || id < 0) return;
     if (const Ball<Real>* b = gizmo(id).asBall())
-      outcome.balls.push_back(BallChange<Real>{id, b->positionAt(now_), b->velocityAt(now_), Vec2<Real>()});
+      outcome.add(BallChange<Real>{id, b->positionAt(now_), b->velocityAt(now_), Vec2<Real>()});
   };
   before(e.a);
   if (e.b != e.a && e.kind != EventKind::Input) before(e.b);
@@ -290,7 +295,7 @@ void GameBoard<Real>::execute(const Event<Real>& e) {
   }
 
   if (observer_) {
-    for (BallChange<Real>& c : outcome.balls) c.velocityAfter = gizmo(c.ball).asBall()->velocityAt(now_);
+    for (BallChange<Real>& c : outcome.balls()) c.velocityAfter = gizmo(c.ball).asBall()->velocityAt(now_);
     observer_->eventExecuted(e, outcome);
   }
 }

@@ -2,7 +2,8 @@
 // The one seam through which the board reports every event-queue decision (architecture.md,
 // seam 2). The replay recorder and the invariant checkers are observers; a board without one
 // skips building the reports altogether.
-#include <vector>
+#include <array>
+#include <span>
 
 #include "gizmo/core/board/event.hpp"
 #include "gizmo/core/board/model_rule.hpp"
@@ -20,9 +21,16 @@ struct BallChange {
   Vec2<Real> velocityAfter;
 };
 
+// An event touches at most two balls (a ball-ball collision), so the outcome lives inline: the
+// board reports every executed event without allocating.
 template <class Real>
 struct EventOutcome {
-  std::vector<BallChange<Real>> balls;
+  std::array<BallChange<Real>, 2> changes;
+  std::size_t count = 0;
+
+  void add(const BallChange<Real>& c) { changes[count++] = c; }
+  std::span<BallChange<Real>> balls() { return {changes.data(), count}; }
+  std::span<const BallChange<Real>> balls() const { return {changes.data(), count}; }
 };
 
 template <class Real>

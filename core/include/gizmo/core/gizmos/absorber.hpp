@@ -61,6 +61,27 @@ class Absorber final : public GridBumper<Real> {
     board.markForRecompute(this->id());
   }
 
+  void saveState(GizmoState<Real>& out) const override {
+    out.ints.push_back(std::int64_t(held_.size()));
+    out.ints.insert(out.ints.end(), held_.begin(), held_.end());
+    out.ints.push_back(std::int64_t(firedInside_.size()));
+    out.ints.insert(out.ints.end(), firedInside_.begin(), firedInside_.end());
+  }
+
+  void restoreState(GizmoStateReader<Real>& in, const GizmoIdCheck& ids) override {
+    auto readBalls = [&](auto& into) {
+      into.clear();
+      const std::int64_t n = in.integer(0, 1 << 20);
+      for (std::int64_t k = 0; k < n; ++k) {
+        const std::int64_t ball = in.integer();
+        if (!ids.isBall(ball)) throw StateError("absorber: holds something that is not a ball");
+        into.push_back(static_cast<GizmoId>(ball));
+      }
+    };
+    readBalls(held_);
+    readBalls(firedInside_);
+  }
+
  protected:
   void respond(Ball<Real>& ball, const Contact<Real>&, BoardAccess<Real>& board) override {
     ball.capture(board.now(), holdPosition());

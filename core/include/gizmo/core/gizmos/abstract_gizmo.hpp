@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gizmo/core/board/board_state.hpp"
 #include "gizmo/core/board/event.hpp"
 #include "gizmo/core/board/model_rule.hpp"
 #include "gizmo/core/board/physics_params.hpp"
@@ -92,6 +93,11 @@ class AbstractGizmo {
   // Until when predictions made now against this gizmo hold (a swinging flipper: until it
   // stops); nullopt for a gizmo that stays as it is.
   virtual std::optional<Real> predictionHorizon() const { return std::nullopt; }
+
+  // What changes as the board runs (board_state.hpp); gizmos that never change keep nothing.
+  // restoreState reads back what saveState wrote and checks the ids it finds.
+  virtual void saveState(GizmoState<Real>& /*out*/) const {}
+  virtual void restoreState(GizmoStateReader<Real>& /*in*/, const GizmoIdCheck& /*ids*/) {}
 
   // Everything the gizmo can ever touch, for the broad phase.
   virtual Box<Real> bounds() const = 0;

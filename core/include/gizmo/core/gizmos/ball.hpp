@@ -2,6 +2,7 @@
 // The ball: the one gizmo that moves. Its path between events is anchored at the time its
 // velocity last changed: p(t) = p₀ + v₀ τ + ½ a τ², τ = t − t₀ (a = 0 in the classic model,
 // which moves balls in straight lines and applies gravity in tick()).
+#include <limits>
 #include <optional>
 
 #include "gizmo/core/geometry/features.hpp"
@@ -330,6 +331,59 @@ class Ball final : public AbstractGizmo<Real> {
     else if (name == property::kVy) v0_.y = fromDouble<Real>(*d);
     else return false;
     return true;
+  }
+
+  void saveState(GizmoState<Real>& out) const override {
+    auto& r = out.reals;
+    auto& i = out.ints;
+    r.insert(r.end(), {t0_, p0_.x, p0_.y, v0_.x, v0_.y, a_.x, a_.y});
+    i.insert(i.end(), {captured_, wedged_, nextFrictionIndex, contact_.has_value(), grazed_.has_value()});
+    if (contact_) {
+      const SegmentFeature<Real>& g = contact_->segment;
+      i.insert(i.end(), {contact_->gizmo, contact_->feature});
+      r.insert(r.end(), {g.a.x, g.a.y, g.b.x, g.b.y, g.normal.x, g.normal.y, g.direction.x, g.direction.y, g.length,
+                         contact_->coefficient});
+    }
+    if (grazed_) {
+      i.push_back(grazed_->other);
+      r.push_back(grazed_->time);
+    }
+  }
+
+  void restoreState(GizmoStateReader<Real>& in, const GizmoIdCheck& ids) override {
+    auto vec = [&] {
+      const Real x = in.real();
+      return Vec2<Real>(x, in.real());
+    };
+    t0_ = in.real();
+    p0_ = vec();
+    v0_ = vec();
+    a_ = vec();
+    captured_ = in.flag();
+    wedged_ = in.flag();
+    nextFrictionIndex = in.integer(0, std::numeric_limits<std::int64_t>::max());
+    const bool hasContact = in.flag(), hasGraze = in.flag();
+    contact_.reset();
+    if (hasContact) {
+      SurfaceContact<Real> c;
+      c.gizmo = static_cast<GizmoId>(in.integer(0, std::numeric_limits<GizmoId>::max()));
+      if (!ids.isGizmo(c.gizmo) || ids.isBall(c.gizmo)) throw StateError("ball contact: not a surface");
+      c.feature = static_cast<std::int32_t>(in.integer(0, std::numeric_limits<std::int32_t>::max()));
+      SegmentFeature<Real>& g = c.segment;
+      g.a = vec();
+      g.b = vec();
+      g.normal = vec();
+      g.direction = vec();
+      g.length = in.real();
+      c.coefficient = in.real();
+      contact_ = c;
+    }
+    grazed_.reset();
+    if (hasGraze) {
+      const GizmoId other = static_cast<GizmoId>(in.integer(0, std::numeric_limits<GizmoId>::max()));
+      if (!ids.isBall(other)) throw StateError("ball graze: not a ball");
+      grazed_ = Graze{other, in.real()};
+    }
   }
 
  private:

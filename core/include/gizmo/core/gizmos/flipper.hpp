@@ -3,6 +3,7 @@
 // pivot in exactly 1/12 s when triggered, reverses at once when triggered mid-swing, and
 // adds its surface speed to the balls it strikes.
 #include <algorithm>
+#include <limits>
 
 #include "gizmo/core/geometry/flipper_time_of_impact.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
@@ -141,6 +142,28 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
   }
 
   const Shape<Real>& stillShape() const { return stillShape_; }
+
+  void saveState(GizmoState<Real>& out) const override {
+    out.reals.insert(out.reals.end(), {t0_, s0_});
+    out.ints.insert(out.ints.end(), {direction_, lastDirection_, blocked_, std::int64_t(hits_.size())});
+    for (const auto& [ball, count] : hits_) out.ints.insert(out.ints.end(), {ball, count});
+  }
+
+  void restoreState(GizmoStateReader<Real>& in, const GizmoIdCheck& ids) override {
+    t0_ = in.real();
+    s0_ = in.real();
+    direction_ = static_cast<int>(in.integer(-1, 1));
+    lastDirection_ = static_cast<int>(in.integer(-1, 1));
+    blocked_ = in.flag();
+    const std::int64_t n = in.integer(0, 1 << 20);
+    hits_.clear();
+    for (std::int64_t k = 0; k < n; ++k) {
+      const std::int64_t ball = in.integer();
+      if (!ids.isBall(ball)) throw StateError("flipper hits: not a ball");
+      hits_.emplace_back(static_cast<GizmoId>(ball), static_cast<int>(in.integer(0, std::numeric_limits<int>::max())));
+    }
+    if (direction_ == 0) stillShape_ = shapeAt(s0_);
+  }
 
  protected:
   void placed() override { layOut(); }

@@ -61,15 +61,29 @@ RunSummary summarize(const GameBoard<Real>& board) {
   return s;
 }
 
-// Builds the board, schedules the keys, simulates request.duration seconds (one tick call of
-// the whole duration; the board splits it) and summarizes. The observer, if any, sees it all.
+// The board of a run at time 0, its keys scheduled, not yet ticked.
 template <class Real>
-RunSummary simulate(const RunRequest& request, BoardObserver<Real>* observer = nullptr) {
+std::unique_ptr<GameBoard<Real>> prepareRun(const RunRequest& request) {
   std::unique_ptr<GameBoard<Real>> board = buildBoard<Real>(request.board, paramsFor<Real>(request));
-  board->setObserver(observer);
   for (const TimedKey& k : request.keys)
     if (k.time <= request.duration) board->scheduleInput(fromDouble<Real>(k.time), k.key, k.direction);
-  board->tick(fromDouble<Real>(request.duration));
+  return board;
+}
+
+// A run is one span of ticks from 0 to its duration. A run resumed from a state saved at the
+// end of tick k carries on with tick k + 1 (the replay log's keyframes).
+template <class Real>
+void continueRun(GameBoard<Real>& board, const RunRequest& request, std::int64_t ticksDone) {
+  board.tickSpan(Real(0), ticksDone + 1, fromDouble<Real>(request.duration));
+}
+
+// Builds the board, schedules the keys, simulates request.duration seconds and summarizes.
+// The observer, if any, sees it all.
+template <class Real>
+RunSummary simulate(const RunRequest& request, BoardObserver<Real>* observer = nullptr) {
+  std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(request);
+  board->setObserver(observer);
+  continueRun(*board, request, 0);
   return summarize(*board);
 }
 
