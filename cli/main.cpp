@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "board_input.hpp"
+#include "log_commands.hpp"
 #include "run_command.hpp"
 
 int main(int argc, char** argv) {
@@ -12,19 +13,52 @@ int main(int argc, char** argv) {
                "Exit codes: 0 ok, 1 a check failed, 2 bad input or usage."};
   app.require_subcommand(1);
 
+  int code = kExitOk;
+
   RunOptions run;
   CLI::App* runCmd = app.add_subcommand("run", "Simulate a board and print the final state and the count of each event kind.\n"
                                                "Example: gizmo run fixtures/boards/spec-example.xml --time 30 --model classic");
-  runCmd->add_option("board", run.board, "Board file, XML or text (default: the specification's example, built in)");
-  runCmd->add_option("--time", run.time, "Seconds of board time to simulate")->capture_default_str();
-  runCmd->add_option("--model", run.model, "Motion model: ballistic or classic")->capture_default_str();
-  runCmd->add_option("--precision", run.precision, "Scalar: float, double, long-double, float128, mpfr:BITS")
-      ->capture_default_str();
-  runCmd->add_option("--max-tick", run.maxTick, "Maximum tick length, seconds")->capture_default_str();
-  runCmd->add_option("--keys", run.keys, "Key script: one 'TIME down|up KEYCODE' per line");
+  addRunOptions(*runCmd, run);
   runCmd->add_flag("--json", run.json, "Print one JSON object instead of text");
-  int code = kExitOk;
   runCmd->callback([&] { code = runCommand(run); });
+
+  RecordOptions record;
+  CLI::App* recordCmd = app.add_subcommand("record", "Simulate a board and write every decision to a replay log.\n"
+                                                     "Example: gizmo record --time 60 -o run.gzlog");
+  addRunOptions(*recordCmd, record.run);
+  recordCmd->add_option("-o,--output", record.output, "The log file to write")->required();
+  recordCmd->add_flag("--json", record.run.json, "Print the run's summary as one JSON object");
+  recordCmd->callback([&] { code = recordCommand(record); });
+
+  ReplayOptions replay;
+  CLI::App* replayCmd = app.add_subcommand(
+      "replay", "Run a log's board again and compare every decision with the log (exit 1 at the first difference),\n"
+                "or with --at/--event show the state at one moment, reached from the nearest keyframe.");
+  replayCmd->add_option("log", replay.log, "The replay log")->required();
+  replayCmd->add_option("--at", replay.at, "Show the state at this board time (seconds)");
+  replayCmd->add_option("--event", replay.event, "Show the state after this many events");
+  replayCmd->add_flag("--json", replay.json, "Print one JSON object");
+  replayCmd->callback([&] { code = replayCommand(replay); });
+
+  DiffOptions diff;
+  CLI::App* diffCmd = app.add_subcommand("diff", "Find the first decision where two logs part (exit 1 when they do).");
+  diffCmd->add_option("first", diff.first, "The first log")->required();
+  diffCmd->add_option("second", diff.second, "The second log")->required();
+  diffCmd->add_flag("--summary", diff.summary, "Also count every kind of decision in both logs");
+  diffCmd->add_option("--context", diff.context, "Decisions shown around the parting")->capture_default_str()->check(CLI::Range(0, 1000));
+  diffCmd->add_flag("--json", diff.json, "Print one JSON object");
+  diffCmd->callback([&] { code = diffCommand(diff); });
+
+  DumpOptions dump;
+  CLI::App* dumpCmd = app.add_subcommand("dump", "Print a log's decisions, one line each.");
+  dumpCmd->add_option("log", dump.log, "The replay log")->required();
+  dumpCmd->add_flag("--json", dump.json, "One JSON object per line");
+  dumpCmd->add_flag("--exact", dump.exact, "Values as exact hex floats instead of 17 significant digits");
+  dumpCmd->add_option("--kind", dump.kind, "Only this event kind, decision type or model rule");
+  dumpCmd->add_option("--gizmo", dump.gizmo, "Only decisions that involve this gizmo");
+  dumpCmd->add_option("--from", dump.from, "Only decisions made at or after this board time");
+  dumpCmd->add_option("--to", dump.to, "Only decisions made at or before this board time");
+  dumpCmd->callback([&] { code = dumpCommand(dump); });
 
   try {
     app.parse(argc, argv);

@@ -1,7 +1,6 @@
 #include "run_command.hpp"
 
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -12,12 +11,6 @@
 
 namespace gizmo::cli {
 namespace {
-
-std::optional<MotionModel> parseModel(const std::string& name) {
-  if (name == "ballistic") return MotionModel::Ballistic;
-  if (name == "classic") return MotionModel::Classic;
-  return std::nullopt;
-}
 
 void printHuman(const std::string& board, const RunOptions& o, const RunSummary& s, double wall) {
   std::printf("board      %s\n", board.c_str());
@@ -49,51 +42,26 @@ void printJson(const RunOptions& o, const RunSummary& s, double wall) {
 }  // namespace
 
 int runCommand(const RunOptions& o) {
-  const std::optional<MotionModel> model = parseModel(o.model);
-  if (!model) {
-    std::cerr << "gizmo run: unknown model '" << o.model << "' (ballistic or classic)\n";
-    return kExitBadInput;
-  }
-  const std::optional<PrecisionChoice> precision = parsePrecision(o.precision);
-  if (!precision) {
-    std::cerr << "gizmo run: unknown precision '" << o.precision << "' (" << kPrecisionNames << ")\n";
-    return kExitBadInput;
-  }
-  if (!(o.time >= 0) || !std::isfinite(o.time) || o.time > 1e7) {
-    std::cerr << "gizmo run: --time must be a number of seconds from 0 to 1e7\n";
-    return kExitBadInput;
-  }
-  if (!(o.maxTick > 0) || !std::isfinite(o.maxTick) || o.maxTick > 10) {
-    std::cerr << "gizmo run: --max-tick must be a number of seconds above 0 and at most 10\n";
-    return kExitBadInput;
-  }
-  RunRequest request;
-  std::string boardName;
-  try {
-    LoadedBoard board = loadBoard(o.board);
-    request.board = std::move(board.spec);
-    boardName = board.name;
-    request.keys = loadKeys(o.keys);
-  } catch (const io::InputError& e) {
-    std::cerr << e.what() << '\n';
-    return kExitBadInput;
-  }
-  request.model = *model;
-  request.maxTick = o.maxTick;
-  request.duration = o.time;
-
+  CheckedRun run;
+  int code = kExitOk;
+  if (!checkRun(o, "run", run, code)) return code;
+  const RunRequest& request = run.request;
   const auto start = std::chrono::steady_clock::now();
   RunSummary summary;
   try {
-    summary = withPrecision(*precision, [&]<class Real>() { return simulate<Real>(request); });
+    summary = withPrecision(run.precision, [&]<class Real>() { return simulate<Real>(request); });
   } catch (const StallError& e) {
     std::cerr << "gizmo run: the simulation stalled: " << e.what() << '\n';
     return kExitCheckFailed;
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (o.json) printJson(o, summary, wall);
-  else printHuman(boardName, o, summary, wall);
+  printRunSummary(run.boardName, o, summary, wall);
   return kExitOk;
+}
+
+void printRunSummary(const std::string& board, const RunOptions& o, const RunSummary& s, double wall) {
+  if (o.json) printJson(o, s, wall);
+  else printHuman(board, o, s, wall);
 }
 
 }  // namespace gizmo::cli

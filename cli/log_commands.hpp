@@ -1,0 +1,43 @@
+#pragma once
+// The replay log's commands: record a run, replay a log (or look at one moment of it), dump its
+// decisions, and find where two logs part.
+#include <optional>
+#include <string>
+
+#include "run_options.hpp"
+
+namespace gizmo::cli {
+
+struct RecordOptions {
+  RunOptions run;
+  std::string output;
+};
+int recordCommand(const RecordOptions& options);
+
+struct ReplayOptions {
+  std::string log;
+  std::optional<double> at;
+  std::optional<unsigned long long> event;
+  bool json = false;
+};
+int replayCommand(const ReplayOptions& options);
+
+struct DumpOptions {
+  std::string log;
+  bool json = false;
+  bool exact = false;
+  std::string kind;
+  std::string gizmo;
+  std::optional<double> from, to;
+};
+int dumpCommand(const DumpOptions& options);
+
+struct DiffOptions {
+  std::string first, second;
+  bool summary = false;
+  bool json = false;
+  int context = 3;
+};
+int diffCommand(const DiffOptions& options);
+
+}  // namespace gizmo::cli

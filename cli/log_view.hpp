@@ -1,0 +1,27 @@
+#pragma once
+// How the log commands (replay, dump, diff) print a decision and a state: one readable line, or
+// one JSON object. Exact values appear as hex floats next to their decimal rounding.
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "gizmo/replay/replay.hpp"
+
+namespace gizmo::cli {
+
+std::string decisionLine(const replay::DecisionView& d, const std::vector<std::string>& names, bool exact);
+nlohmann::ordered_json decisionJson(const replay::DecisionView& d, const std::vector<std::string>& names);
+
+void printState(const std::string& label, const replay::StateView& s);
+nlohmann::ordered_json stateJson(const replay::StateView& s);
+
+// The gizmos a decision names (for filters).
+bool involves(const replay::DecisionView& d, GizmoId id);
+// The kind a decision has for --kind: an event kind for event decisions ("collision"), else its
+// type ("trigger", "rule", "tick", …); a rule also answers to its own name ("friction").
+bool hasKind(const replay::DecisionView& d, std::string_view kind);
+bool isKindName(std::string_view kind);
+
+// Opens a log for a command; on failure prints why and returns nullopt with exitCode set.
+std::optional<replay::OpenedLog> openLogFor(const std::string& command, const std::string& path, int& exitCode);
+
+}  // namespace gizmo::cli

@@ -1,0 +1,71 @@
+#pragma once
+// A chunk's payload: its preamble, its keyframe (the board's full state and that state's hash;
+// absent in the first chunk, which starts from the board as built) and then its records.
+#include <optional>
+
+#include "gizmo/replay/checksum.hpp"
+#include "gizmo/replay/log_file.hpp"
+#include "gizmo/replay/record_codec.hpp"
+#include "gizmo/replay/state_codec.hpp"
+
+namespace gizmo::replay {
+
+// The state's bytes as written in a keyframe, and the hash a keyframe carries.
+template <class Real>
+std::vector<std::uint8_t> stateBytes(const BoardState<Real>& s) {
+  ByteWriter w;
+  writeState(w, s);
+  const auto b = w.bytes();
+  return {b.begin(), b.end()};
+}
+inline std::uint64_t stateHash(std::span<const std::uint8_t> bytes) { return checksum64(bytes); }
+
+template <class Real>
+struct OpenedChunk {
+  ChunkPreamble preamble;
+  std::optional<BoardState<Real>> keyframe;
+  std::uint64_t keyframeHash = 0;
+  std::size_t recordsAt = 0;  // where the records start in the payload
+};
+
+// Reads a chunk's preamble and keyframe, checking the keyframe against its hash.
+template <class Real>
+OpenedChunk<Real> openChunk(std::span<const std::uint8_t> payload) {
+  OpenedChunk<Real> c;
+  ByteReader r(payload);
+  r.span(readPreamble(payload, c.preamble));
+  if (c.preamble.hasKeyframe) {
+    const std::size_t at = r.position();
+    const std::uint64_t n = r.varint();
+    if (n > r.remaining()) throw FormatError("keyframe longer than its chunk", at);
+    const std::span<const std::uint8_t> bytes = r.span(static_cast<std::size_t>(n));
+    c.keyframeHash = r.u64();
+    if (stateHash(bytes) != c.keyframeHash) throw FormatError("keyframe does not match its hash", at);
+    ByteReader s(bytes);
+    c.keyframe = readState<Real>(s);
+    if (!s.atEnd()) throw FormatError("keyframe: bytes after the state", at + s.position());
+  }
+  c.recordsAt = r.position();
+  return c;
+}
+
+// A decoder positioned at the chunk's first record, its context set from the keyframe.
+template <class Real>
+class ChunkRecords {
+ public:
+  ChunkRecords(std::span<const std::uint8_t> payload, const OpenedChunk<Real>& c, const PhysicsParams<Real>& params)
+      : reader_(payload), decoder_(reader_, params) {
+    reader_.span(c.recordsAt);
+    if (c.keyframe) decoder_.reset(c.keyframe->now, c.keyframe->events, c.keyframe->nextSequence);
+    else decoder_.reset(Real(0), {}, 0);
+  }
+  bool atEnd() const { return decoder_.atEnd(); }
+  Decision<Real> next() { return decoder_.next(); }
+  std::size_t position() const { return reader_.position(); }
+
+ private:
+  ByteReader reader_;
+  RecordDecoder<Real> decoder_;
+};
+
+}  // namespace gizmo::replay

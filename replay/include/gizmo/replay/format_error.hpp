@@ -1,0 +1,20 @@
+#pragma once
+// The one exception of the replay byte layer: the bytes being read are not a valid encoding.
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace gizmo::replay {
+
+// what() reads "<description> at byte <offset>". The offset is relative to the buffer the failing
+// reader was given; a caller that knows where that buffer sits (file, chunk) adds that context.
+class FormatError : public std::runtime_error {
+ public:
+  FormatError(const std::string& description, std::uint64_t offset);
+  std::uint64_t offset() const noexcept { return offset_; }
+
+ private:
+  std::uint64_t offset_;
+};
+
+}  // namespace gizmo::replay

@@ -1,0 +1,372 @@
+#pragma once
+// The records of a chunk, both ways: RecordEncoder turns the board's reports into bytes and
+// RecordDecoder turns bytes back into decisions. They mirror each other line by line, so they
+// live together; docs/replay-format.md describes the same bytes in prose.
+//
+// Both keep the same small context, reset at every chunk's keyframe: the current time (times
+// are written against it), the next sequence number (events are named by their distance from
+// it) and the last position and velocity written (outcomes are written against them).
+#include <unordered_map>
+
+#include "gizmo/core/board/board_state.hpp"
+#include "gizmo/core/board/observer.hpp"
+#include "gizmo/core/board/physics_params.hpp"
+#include "gizmo/replay/format_error.hpp"
+#include "gizmo/replay/log_format.hpp"
+#include "gizmo/replay/scalar_codec.hpp"
+
+namespace gizmo::replay {
+
+// Which of a, b and feature an event of each kind uses; the others are −1.
+struct EventFields {
+  bool a, b, feature;
+};
+inline EventFields scheduledFields(EventKind k) {
+  switch (k) {
+    case EventKind::Collision:
+    case EventKind::Leave: return {true, true, true};
+    case EventKind::Input: return {false, true, true};
+    case EventKind::EndOfTick: return {false, false, false};
+    default: return {true, false, false};
+  }
+}
+
+template <class Real>
+struct RecordContext {
+  Real now{0};
+  std::uint64_t nextSequence = 0;
+  Vec2<Real> lastPosition, lastVelocity;
+  Real maxTick{0}, frictionStep{0};
+
+  void reset(const Real& time, std::uint64_t sequence) {
+    now = time;
+    nextSequence = sequence;
+    lastPosition = lastVelocity = Vec2<Real>();
+  }
+};
+
+template <class Real>
+class RecordEncoder {
+ public:
+  RecordEncoder(ByteWriter& out, const PhysicsParams<Real>& params) : out_(out) {
+    c_.maxTick = params.maxTick;
+    c_.frictionStep = params.frictionStep;
+  }
+  void reset(const Real& now, std::uint64_t nextSequence) {
+    c_.reset(now, nextSequence);
+    held_.clear();
+  }
+
+  void scheduled(const Event<Real>& e) {
+    flushHeld();
+    if (e.sequence != c_.nextSequence) throw std::logic_error("replay: events scheduled out of sequence");
+    ++c_.nextSequence;
+    const EventFields f = scheduledFields(e.kind);
+    const bool fits = (f.a || e.a == kNoGizmo) && (f.b || e.b == kNoGizmo) && (f.feature || e.feature == -1);
+    std::uint8_t tag = static_cast<std::uint8_t>(e.kind);
+    if (!fits) tag |= kScheduledAllFields;
+    std::int64_t k = 0;
+    const TimeForm form = timeForm(e, k);
+    out_.u8(static_cast<std::uint8_t>(tag | (static_cast<std::uint8_t>(form) << 3)));
+    if (!fits || f.a) out_.svarint(e.a);
+    if (!fits || f.b) out_.svarint(e.b);
+    if (!fits || f.feature) out_.svarint(e.feature);
+    if (form == TimeForm::FrictionGrid || form == TimeForm::TickGrid) out_.varint(std::uint64_t(k));
+    if (form == TimeForm::Explicit) writeScalar(out_, e.time, c_.now);
+  }
+
+  void removed(const Event<Real>& e) {
+    flushHeld();
+    const std::uint64_t d = distance(e);
+    if (d < 15) {
+      out_.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Removed) | d));
+    } else {
+      out_.u8(static_cast<std::uint8_t>(RecordType::Removed) | 15);
+      out_.varint(d - 15);
+    }
+  }
+
+  void executed(const Event<Real>& e, const EventOutcome<Real>& o) {
+    c_.now = e.time;
+    const std::span<const BallChange<Real>> changes = o.balls();
+    bool forA = false, forB = false;
+    std::size_t i = 0;
+    if (i < changes.size() && changes[i].ball == e.a) forA = true, ++i;
+    if (i < changes.size() && changes[i].ball == e.b) forB = true, ++i;
+    if (i != changes.size()) throw std::logic_error("replay: an outcome for a ball the event does not name");
+    const std::uint64_t d = distance(e);
+    std::uint8_t tag = static_cast<std::uint8_t>(RecordType::Executed);
+    if (forA) tag |= 8;
+    if (forB) tag |= 4;
+    out_.u8(static_cast<std::uint8_t>(tag | (d < 3 ? d : 3)));
+    if (d >= 3) out_.varint(d - 3);
+    for (const BallChange<Real>& ch : changes) {
+      writeVec(ch.position, c_.lastPosition);
+      writeVec(ch.velocityBefore, c_.lastVelocity);
+      writeVec(ch.velocityAfter, ch.velocityBefore);
+      c_.lastPosition = ch.position;
+      c_.lastVelocity = ch.velocityAfter;
+    }
+    flushHeld();  // what the event did, after the event
+  }
+
+  // The board reports what an event does (triggers, actions, inputs, rules) while it runs and
+  // the event itself when it is done. These reports are held and written after the event's
+  // record, which sets the current time they share; only a report that is not followed by its
+  // event needs a time record of its own.
+  void trigger(const Real& t, GizmoId source, GizmoId target) {
+    ByteWriter& w = hold(t);
+    w.u8(static_cast<std::uint8_t>(RecordType::Trigger));
+    w.svarint(source);
+    w.svarint(target);
+  }
+  void action(const Real& t, GizmoId target) {
+    ByteWriter& w = hold(t);
+    w.u8(static_cast<std::uint8_t>(RecordType::Action));
+    w.svarint(target);
+  }
+  void input(const Real& t, int key, KeyDirection d) {
+    ByteWriter& w = hold(t);
+    w.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Input) | (d == KeyDirection::Up)));
+    w.svarint(key);
+  }
+  void rule(const Real& t, ModelRule r, GizmoId g, GizmoId other) {
+    ByteWriter& w = hold(t);
+    w.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Rule) | static_cast<std::uint8_t>(r)));
+    w.svarint(g);
+    w.svarint(other);
+  }
+  void tick(const Real& t) {
+    flushHeld();
+    at(t);
+    out_.u8(static_cast<std::uint8_t>(RecordType::Tick));
+  }
+  // Writes whatever is held (before a chunk is closed).
+  void flush() { flushHeld(); }
+
+ private:
+  std::uint64_t distance(const Event<Real>& e) const {
+    if (e.sequence >= c_.nextSequence) throw std::logic_error("replay: an event that was never scheduled");
+    return c_.nextSequence - 1 - e.sequence;
+  }
+
+  ByteWriter& hold(const Real& t) {
+    if (held_.size() > 0 && !(t == heldTime_)) flushHeld();
+    heldTime_ = t;
+    return held_;
+  }
+  void flushHeld() {
+    if (held_.size() == 0) return;
+    at(heldTime_);
+    out_.bytes(held_.bytes().data(), held_.size());
+    held_.clear();
+  }
+
+  // Reports carry the time of the event they belong to; anything else is written as a move of
+  // the current time first, so that nothing is lost.
+  void at(const Real& t) {
+    if (t == c_.now) return;
+    out_.u8(static_cast<std::uint8_t>(RecordType::Time));
+    writeScalar(out_, t, c_.now);
+    c_.now = t;
+  }
+
+  TimeForm timeForm(const Event<Real>& e, std::int64_t& k) const {
+    if (e.time == c_.now) return TimeForm::Now;
+    if (e.time == Real(c_.now + c_.maxTick)) return TimeForm::NowPlusTick;
+    if (e.kind == EventKind::FrictionTick && onGrid(e.time, c_.frictionStep, k)) return TimeForm::FrictionGrid;
+    if (e.kind == EventKind::EndOfTick && onGrid(e.time, c_.maxTick, k)) return TimeForm::TickGrid;
+    return TimeForm::Explicit;
+  }
+  static bool onGrid(const Real& t, const Real& step, std::int64_t& k) {
+    if (!(Real(0) < step) || !(Real(0) <= t)) return false;
+    const double q = toDouble(Real(t / step));
+    if (!(q < 9.0e15)) return false;
+    k = static_cast<std::int64_t>(q + 0.5);
+    return Real(Real(k) * step) == t;
+  }
+
+  void writeVec(const Vec2<Real>& v, const Vec2<Real>& base) {
+    writeScalar(out_, v.x, base.x);
+    writeScalar(out_, v.y, base.y);
+  }
+
+  ByteWriter& out_;
+  RecordContext<Real> c_;
+  ByteWriter held_;
+  Real heldTime_{0};
+};
+
+// One decoded record.
+enum class DecisionType : std::uint8_t { Scheduled, Removed, Executed, Trigger, Action, Input, Rule, Tick, Time };
+
+inline std::string_view decisionTypeName(DecisionType t) {
+  switch (t) {
+    case DecisionType::Scheduled: return "scheduled";
+    case DecisionType::Removed: return "removed";
+    case DecisionType::Executed: return "executed";
+    case DecisionType::Trigger: return "trigger";
+    case DecisionType::Action: return "action";
+    case DecisionType::Input: return "input";
+    case DecisionType::Rule: return "rule";
+    case DecisionType::Tick: return "tick";
+    case DecisionType::Time: return "time";
+  }
+  return "?";
+}
+
+template <class Real>
+struct Decision {
+  DecisionType type = DecisionType::Tick;
+  Real time{0};               // the board time the decision was made at
+  Event<Real> event;          // scheduled, removed, executed
+  EventOutcome<Real> outcome; // executed
+  GizmoId gizmo = kNoGizmo;   // trigger: source; action: target; rule: the gizmo
+  GizmoId other = kNoGizmo;   // trigger: target; rule: the other gizmo
+  int key = 0;
+  KeyDirection direction = KeyDirection::Down;
+  ModelRule rule = ModelRule::FrictionApplied;
+};
+
+template <class Real>
+class RecordDecoder {
+ public:
+  RecordDecoder(ByteReader& in, const PhysicsParams<Real>& params) : in_(in) {
+    c_.maxTick = params.maxTick;
+    c_.frictionStep = params.frictionStep;
+  }
+  // The keyframe's time, its queue and its next sequence number.
+  void reset(const Real& now, const std::vector<Event<Real>>& live, std::uint64_t nextSequence) {
+    c_.reset(now, nextSequence);
+    live_.clear();
+    for (const Event<Real>& e : live) live_.emplace(e.sequence, e);
+  }
+
+  bool atEnd() const { return in_.atEnd(); }
+
+  Decision<Real> next() {
+    Decision<Real> d;
+    const std::size_t start = in_.position();
+    const std::uint8_t tag = in_.u8();
+    if (!(tag & 0x80)) {
+      d.type = DecisionType::Scheduled;
+      Event<Real>& e = d.event;
+      const std::uint8_t kind = tag & 7, form = (tag >> 3) & 7;
+      e.kind = static_cast<EventKind>(kind);
+      const bool all = tag & kScheduledAllFields;
+      const EventFields f = scheduledFields(e.kind);
+      if (all || f.a) e.a = gizmoId();
+      if (all || f.b) e.b = gizmoId();
+      if (all || f.feature) e.feature = static_cast<std::int32_t>(bounded(INT32_MIN, INT32_MAX));
+      switch (static_cast<TimeForm>(form)) {
+        case TimeForm::Now: e.time = c_.now; break;
+        case TimeForm::NowPlusTick: e.time = c_.now + c_.maxTick; break;
+        case TimeForm::FrictionGrid: e.time = Real(grid()) * c_.frictionStep; break;
+        case TimeForm::TickGrid: e.time = Real(grid()) * c_.maxTick; break;
+        case TimeForm::Explicit: e.time = readScalar<Real>(in_, c_.now); break;
+        default: throw FormatError("unknown time form " + std::to_string(form), start);
+      }
+      e.sequence = c_.nextSequence++;
+      live_.emplace(e.sequence, e);
+      d.time = c_.now;
+      return d;
+    }
+    d.time = c_.now;
+    switch (static_cast<RecordType>(tag & 0xF0)) {
+      case RecordType::Removed: {
+        const std::uint64_t small = tag & 15;
+        d.type = DecisionType::Removed;
+        d.event = take(small < 15 ? small : 15 + in_.varint(), start);
+        return d;
+      }
+      case RecordType::Executed: {
+        const std::uint64_t small = tag & 3;
+        d.type = DecisionType::Executed;
+        d.event = take(small < 3 ? small : 3 + in_.varint(), start);
+        c_.now = d.time = d.event.time;
+        if (tag & 8) readChange(d.outcome, d.event.a);
+        if (tag & 4) readChange(d.outcome, d.event.b);
+        return d;
+      }
+      case RecordType::Trigger:
+        d.type = DecisionType::Trigger;
+        d.gizmo = gizmoId();
+        d.other = gizmoId();
+        return d;
+      case RecordType::Action:
+        d.type = DecisionType::Action;
+        d.gizmo = gizmoId();
+        return d;
+      case RecordType::Input:
+        if (tag & 14) throw FormatError("bad input record", start);
+        d.type = DecisionType::Input;
+        d.direction = (tag & 1) ? KeyDirection::Up : KeyDirection::Down;
+        d.key = static_cast<int>(bounded(INT32_MIN, INT32_MAX));
+        return d;
+      case RecordType::Rule:
+        if ((tag & 15) > static_cast<int>(ModelRule::Jammed)) throw FormatError("unknown model rule", start);
+        d.type = DecisionType::Rule;
+        d.rule = static_cast<ModelRule>(tag & 15);
+        d.gizmo = gizmoId();
+        d.other = gizmoId();
+        return d;
+      case RecordType::Tick:
+        if (tag & 15) throw FormatError("bad tick record", start);
+        d.type = DecisionType::Tick;
+        return d;
+      case RecordType::Time:
+        if (tag & 15) throw FormatError("bad time record", start);
+        d.type = DecisionType::Time;
+        c_.now = d.time = readScalar<Real>(in_, c_.now);
+        return d;
+    }
+    throw FormatError("unknown record", start);
+  }
+
+  const std::unordered_map<std::uint64_t, Event<Real>>& live() const { return live_; }
+
+ private:
+  std::int64_t bounded(std::int64_t lo, std::int64_t hi) {
+    const std::size_t at = in_.position();
+    const std::int64_t v = in_.svarint();
+    if (v < lo || v > hi) throw FormatError("number out of range", at);
+    return v;
+  }
+  GizmoId gizmoId() { return static_cast<GizmoId>(bounded(-1, INT32_MAX)); }
+  std::int64_t grid() {
+    const std::size_t at = in_.position();
+    const std::uint64_t k = in_.varint();
+    if (k >= (std::uint64_t(1) << 53)) throw FormatError("grid index out of range", at);
+    return static_cast<std::int64_t>(k);
+  }
+
+  Event<Real> take(std::uint64_t distance, std::size_t at) {
+    if (distance >= c_.nextSequence) throw FormatError("names an event never scheduled", at);
+    auto it = live_.find(c_.nextSequence - 1 - distance);
+    if (it == live_.end()) throw FormatError("names an event that is not in the queue", at);
+    Event<Real> e = it->second;
+    live_.erase(it);
+    return e;
+  }
+
+  void readChange(EventOutcome<Real>& o, GizmoId ball) {
+    BallChange<Real> ch;
+    ch.ball = ball;
+    ch.position = readVec(c_.lastPosition);
+    ch.velocityBefore = readVec(c_.lastVelocity);
+    ch.velocityAfter = readVec(ch.velocityBefore);
+    c_.lastPosition = ch.position;
+    c_.lastVelocity = ch.velocityAfter;
+    o.add(ch);
+  }
+  Vec2<Real> readVec(const Vec2<Real>& base) {
+    const Real x = readScalar<Real>(in_, base.x);
+    return Vec2<Real>(x, readScalar<Real>(in_, base.y));
+  }
+
+  ByteReader& in_;
+  RecordContext<Real> c_;
+  std::unordered_map<std::uint64_t, Event<Real>> live_;
+};
+
+}  // namespace gizmo::replay

@@ -1,0 +1,123 @@
+#pragma once
+// The observer that turns a run into chunks (architecture.md, seam 2): every report of the
+// board becomes a record; at the first tick boundary after a chunk is full, the board's state
+// is saved as the next chunk's keyframe.
+#include <algorithm>
+
+#include "gizmo/core/board/game_board.hpp"
+#include "gizmo/replay/chunk.hpp"
+
+namespace gizmo::replay {
+
+template <class Real>
+class Recorder final : public BoardObserver<Real> {
+ public:
+  Recorder(ChunkSink& sink, const GameBoard<Real>& board) : sink_(sink), board_(board), encoder_(chunk_, board.params()) {
+    begin(std::nullopt);
+  }
+
+  void eventScheduled(const Event<Real>& e) override {
+    if (pending_) beginPending();
+    ++decisions_;
+    encoder_.scheduled(e);
+  }
+  void eventRemoved(const Event<Real>& e) override {
+    if (pending_) beginPending();
+    ++decisions_;
+    encoder_.removed(e);
+  }
+  void eventExecuted(const Event<Real>& e, const EventOutcome<Real>& o) override {
+    if (pending_) beginPending();
+    ++decisions_;
+    encoder_.executed(e, o);
+  }
+  void triggerFired(const Real& t, GizmoId s, GizmoId g) override {
+    if (pending_) beginPending();
+    ++decisions_;
+    encoder_.trigger(t, s, g);
+  }
+  void actionPerformed(const Real& t, GizmoId g) override {
+    if (pending_) beginPending();
+    ++decisions_;
+    encoder_.action(t, g);
+  }
+  void inputApplied(const Real& t, int key, KeyDirection d) override {
+    if (pending_) beginPending();
+    ++decisions_;
+    encoder_.input(t, key, d);
+  }
+  void modelRuleApplied(const Real& t, ModelRule r, GizmoId g, GizmoId o) override {
+    if (pending_) beginPending();
+    ++decisions_;
+    encoder_.rule(t, r, g, o);
+  }
+  void tickBoundary(const Real& t) override {
+    if (pending_) beginPending();
+    ++decisions_;
+    encoder_.tick(t);
+    ++ticks_;
+    if (chunk_.size() >= limit_) {
+      close();
+      // The next chunk starts from the state now; it is written once a record follows.
+      pendingState_ = board_.saveState();
+      pending_ = true;
+    }
+  }
+
+  // Closes the last chunk and the log.
+  void finish(bool completed, const std::string& message = {}) {
+    if (!pending_) close();
+    sink_.finish(RunEnd{completed, board_.executedTotal(), toDouble(board_.now()), message});
+  }
+
+ private:
+  void beginPending() {
+    pending_ = false;
+    begin(std::move(pendingState_));
+  }
+
+  void begin(std::optional<BoardState<Real>> state) {
+    chunk_.clear();
+    ChunkPreamble p;
+    p.ticksDone = ticks_;
+    p.eventsDone = state ? state->executedTotal : 0;
+    p.decisionsDone = decisions_;
+    p.time = state ? toDouble(state->now) : 0.0;
+    p.hasKeyframe = state.has_value();
+    preamble_.clear();
+    writePreamble(preamble_, p);
+    chunk_.bytes(preamble_.data(), preamble_.size());
+    std::size_t keyframeBytes = 0;
+    if (state) {
+      const std::vector<std::uint8_t> bytes = stateBytes(*state);
+      chunk_.varint(bytes.size());
+      chunk_.bytes(bytes.data(), bytes.size());
+      chunk_.u64(stateHash(bytes));
+      keyframeBytes = bytes.size();
+      encoder_.reset(state->now, state->nextSequence);
+    } else {
+      encoder_.reset(Real(0), 0);
+    }
+    limit_ = std::max(kChunkTargetBytes, 8 * keyframeBytes);
+    entry_ = ChunkEntry{0, p.eventsDone, p.ticksDone, p.time};
+  }
+
+  void close() {
+    encoder_.flush();
+    sink_.chunk(chunk_.bytes(), entry_);
+  }
+
+  ChunkSink& sink_;
+  const GameBoard<Real>& board_;
+  ByteWriter chunk_;
+  RecordEncoder<Real> encoder_;
+  std::vector<std::uint8_t> preamble_;
+  ChunkEntry entry_;
+  std::size_t limit_ = kChunkTargetBytes;
+  std::uint64_t ticks_ = 0;
+  std::uint64_t decisions_ = 0;
+  bool pending_ = false;
+  std::optional<BoardState<Real>> pendingState_;
+};
+
+}  // namespace gizmo::replay

@@ -1,0 +1,129 @@
+#pragma once
+// The replay log's uses, for any scalar the log was made with: record a run, replay a log and
+// compare every decision, reach a moment of a log through its nearest keyframe, and walk its
+// decisions. The scalar is chosen from the log's header; callers see plain values.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gizmo/core/math/precision.hpp"
+#include "gizmo/core/run/run.hpp"
+#include "gizmo/replay/log_file.hpp"
+#include "gizmo/replay/log_header.hpp"
+#include "gizmo/replay/record_codec.hpp"
+
+namespace gizmo::replay {
+
+// --- recording -------------------------------------------------------------------------------
+struct RecordResult {
+  RunSummary summary;
+  bool completed = true;
+  std::string error;  // why the run stopped early (the log says so too)
+};
+// Runs the request in the chosen scalar and sends the log to sink. A run that stops with an
+// error still closes its log (completed = false).
+RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink);
+
+// --- plain views of decoded values -----------------------------------------------------------
+struct Exact {
+  double value = 0;
+  std::string text;  // the exact value (hex float)
+};
+struct BallView {
+  GizmoId ball = kNoGizmo;
+  std::string name;
+  Exact x, y, vx, vy;  // for an executed event: position, and velocity after
+  Exact vxBefore, vyBefore;
+};
+struct DecisionView {
+  std::uint64_t index = 0;       // decisions before this one in the log
+  std::uint64_t eventIndex = 0;  // events executed before this one
+  DecisionType type = DecisionType::Tick;
+  Exact time;  // the board time the decision was made at (never decreases along a log)
+  // scheduled, removed, executed
+  Exact eventTime;
+  EventKind kind = EventKind::EndOfTick;
+  GizmoId a = kNoGizmo, b = kNoGizmo;
+  std::int32_t feature = -1;
+  std::uint64_t sequence = 0;
+  std::vector<BallView> balls;  // executed: the balls it changed
+  // trigger (gizmo → other), action (gizmo), rule (gizmo, other), input (key, direction)
+  GizmoId gizmo = kNoGizmo, other = kNoGizmo;
+  int key = 0;
+  KeyDirection direction = KeyDirection::Down;
+  ModelRule rule = ModelRule::FrictionApplied;
+};
+
+struct OpenedLog {
+  LogReader reader;
+  LogHeader header;
+  RunRequest request;
+  PrecisionChoice precision;
+  std::vector<std::string> gizmoNames;  // by id, as the board builds them
+};
+// Reads a log's header and finds its chunks; throws FormatError (with the path) when it is not a
+// readable log.
+OpenedLog openLog(const std::string& path);
+OpenedLog openLog(std::unique_ptr<ByteSource> source, bool verifyChecksums = true);
+
+// A log's decisions one at a time, in order, starting with the first chunk that may hold
+// decisions at or after `fromTime`. next() throws FormatError on a damaged chunk.
+class DecisionStream {
+ public:
+  explicit DecisionStream(const OpenedLog& log, double fromTime = -1);
+  ~DecisionStream();
+  DecisionStream(DecisionStream&&) noexcept;
+  std::optional<DecisionView> next();
+
+  class Source;  // the decoder for the log's scalar
+
+ private:
+  std::unique_ptr<Source> source_;
+};
+
+// --- replaying -------------------------------------------------------------------------------
+struct StateView {
+  Exact time;
+  std::uint64_t events = 0;
+  std::vector<BallView> balls;  // every ball: position and velocity at `time`
+  std::vector<std::string> queue;  // the pending events, earliest first, one line each
+};
+struct ReplayReport {
+  bool identical = true;
+  std::uint64_t decisions = 0;  // compared
+  std::uint64_t events = 0;
+  std::string note;  // e.g. the log was cut off and only its prefix was compared
+  // At the first difference:
+  std::optional<DecisionView> logDecision, runDecision;  // absent when one side had ended
+  std::string where;  // what differs, in words
+  std::optional<StateView> logState, runState;
+};
+ReplayReport replayLog(const OpenedLog& log);
+
+// The state after `events` events (or at board time `time`), reached from the nearest keyframe.
+struct SeekTarget {
+  std::optional<std::uint64_t> events;
+  std::optional<double> time;
+};
+StateView seekLog(const OpenedLog& log, const SeekTarget& target);
+
+// --- two logs ----------------------------------------------------------------------------------
+struct DiffReport {
+  bool parted = false;
+  bool sameScalar = true;       // values are compared exactly only between logs of one scalar
+  std::uint64_t matched = 0;    // decisions alike before the logs part
+  std::string where;            // what differs at the parting decision
+  std::vector<std::string> notes;  // e.g. the logs are of different boards or models
+  std::vector<DecisionView> before;  // the last alike decisions (of the first log)
+  std::optional<DecisionView> first, second;  // the parting decisions; absent where a log ended
+  std::vector<DecisionView> afterFirst, afterSecond;
+  double maxTimeDifference = 0;      // over alike decisions: event times
+  double maxPositionDifference = 0;  // over alike executed events: ball positions
+  // With counts: decisions of each type in each log (the whole logs are read).
+  std::vector<std::pair<std::string, std::pair<std::uint64_t, std::uint64_t>>> counts;
+};
+DiffReport diffLogs(const OpenedLog& first, const OpenedLog& second, std::size_t context, bool counts);
+
+}  // namespace gizmo::replay

@@ -1,0 +1,104 @@
+// Where two logs part (replay.hpp: diffLogs). Two decisions are alike when they are the same
+// kind of decision about the same gizmos and events; between logs of one scalar their values
+// must also be equal to the last bit, between different scalars their differences are measured.
+#include <cmath>
+#include <deque>
+
+#include "gizmo/replay/replay.hpp"
+
+namespace gizmo::replay {
+namespace {
+
+bool sameValue(const Exact& a, const Exact& b, bool exact) { return exact ? a.text == b.text : true; }
+
+// Empty when alike, else what differs.
+std::string difference(const DecisionView& x, const DecisionView& y, bool exact) {
+  if (x.type != y.type) return "a different decision";
+  if (x.kind != y.kind || x.a != y.a || x.b != y.b || x.feature != y.feature || x.sequence != y.sequence)
+    return "a different event";
+  if (x.gizmo != y.gizmo || x.other != y.other || x.key != y.key || x.direction != y.direction || x.rule != y.rule)
+    return "different gizmos, keys or rules";
+  if (!sameValue(x.time, y.time, exact) || !sameValue(x.eventTime, y.eventTime, exact)) return "a different time";
+  if (x.balls.size() != y.balls.size()) return "different balls changed";
+  for (std::size_t i = 0; i < x.balls.size(); ++i) {
+    const BallView &p = x.balls[i], &q = y.balls[i];
+    if (p.ball != q.ball) return "different balls changed";
+    if (!sameValue(p.x, q.x, exact) || !sameValue(p.y, q.y, exact)) return "a different position";
+    if (!sameValue(p.vxBefore, q.vxBefore, exact) || !sameValue(p.vyBefore, q.vyBefore, exact))
+      return "a different velocity before";
+    if (!sameValue(p.vx, q.vx, exact) || !sameValue(p.vy, q.vy, exact)) return "a different velocity after";
+  }
+  return {};
+}
+
+void measure(const DecisionView& x, const DecisionView& y, DiffReport& r) {
+  r.maxTimeDifference = std::max(r.maxTimeDifference, std::abs(x.eventTime.value - y.eventTime.value));
+  for (std::size_t i = 0; i < x.balls.size(); ++i)
+    r.maxPositionDifference = std::max(r.maxPositionDifference, std::hypot(x.balls[i].x.value - y.balls[i].x.value,
+                                                                           x.balls[i].y.value - y.balls[i].y.value));
+}
+
+void count(std::vector<std::pair<std::string, std::pair<std::uint64_t, std::uint64_t>>>& counts,
+           const DecisionView& d, bool second) {
+  std::string key(decisionTypeName(d.type));
+  if (d.type == DecisionType::Executed) key += " " + std::string(eventKindName(d.kind));
+  auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == key; });
+  if (it == counts.end()) it = counts.insert(counts.end(), {key, {0, 0}});
+  ++(second ? it->second.second : it->second.first);
+}
+
+}  // namespace
+
+DiffReport diffLogs(const OpenedLog& a, const OpenedLog& b, std::size_t context, bool counts) {
+  DiffReport r;
+  r.sameScalar = a.header.scalar == b.header.scalar;
+  if (a.header.board != b.header.board) r.notes.push_back("the logs are of different boards");
+  if (a.header.model != b.header.model) r.notes.push_back("the logs use different motion models");
+  if (!r.sameScalar) r.notes.push_back("different scalars (" + a.header.scalar + ", " + b.header.scalar +
+                                       "): decisions are compared without their values, whose differences are measured");
+  if (a.header.keys.size() != b.header.keys.size()) r.notes.push_back("the logs have different key input");
+
+  DecisionStream sa(a), sb(b);
+  std::deque<DecisionView> recent;
+  for (;;) {
+    std::optional<DecisionView> x = sa.next(), y = sb.next();
+    if (!x && !y) break;
+    if (x && y) {
+      const std::string why = difference(*x, *y, r.sameScalar);
+      if (why.empty()) {
+        measure(*x, *y, r);
+        ++r.matched;
+        if (counts) count(r.counts, *x, false), count(r.counts, *y, true);
+        recent.push_back(std::move(*x));
+        if (recent.size() > context) recent.pop_front();
+        continue;
+      }
+      r.where = why;
+    } else {
+      r.where = x ? "the second log ends here" : "the first log ends here";
+    }
+    r.parted = true;
+    r.before.assign(recent.begin(), recent.end());
+    r.first = x;
+    r.second = y;
+    if (counts) {
+      if (x) count(r.counts, *x, false);
+      if (y) count(r.counts, *y, true);
+    }
+    // What follows on each side: a few decisions for the reader, or all of them for the counts.
+    for (std::optional<DecisionView> d; (d = sa.next());) {
+      if (r.afterFirst.size() < context) r.afterFirst.push_back(*d);
+      else if (!counts) break;
+      if (counts) count(r.counts, *d, false);
+    }
+    for (std::optional<DecisionView> d; (d = sb.next());) {
+      if (r.afterSecond.size() < context) r.afterSecond.push_back(*d);
+      else if (!counts) break;
+      if (counts) count(r.counts, *d, true);
+    }
+    break;
+  }
+  return r;
+}
+
+}  // namespace gizmo::replay

@@ -1,0 +1,411 @@
+// The replay log's uses (replay.hpp), each written once over the scalar and dispatched on the
+// precision named in the log's header.
+#include "gizmo/replay/replay.hpp"
+
+#include <cstring>
+#include <map>
+
+#include "gizmo/replay/chunk.hpp"
+#include "gizmo/replay/format_error.hpp"
+#include "gizmo/replay/recorder.hpp"
+
+namespace gizmo::replay {
+namespace {
+
+template <class Real>
+Exact exact(const Real& x) {
+  return Exact{toDouble(x), exactText(x)};
+}
+
+std::string nameOf(const std::vector<std::string>& names, GizmoId id) {
+  if (id >= 0 && std::size_t(id) < names.size()) return names[std::size_t(id)];
+  return id == kNoGizmo ? "" : "#" + std::to_string(id);
+}
+
+template <class Real>
+DecisionView viewOf(const Decision<Real>& d, std::uint64_t index, std::uint64_t eventIndex,
+                    const std::vector<std::string>& names) {
+  DecisionView v;
+  v.index = index;
+  v.eventIndex = eventIndex;
+  v.type = d.type;
+  v.time = exact(d.time);
+  if (d.type == DecisionType::Scheduled || d.type == DecisionType::Removed || d.type == DecisionType::Executed)
+    v.eventTime = exact(d.event.time);
+  v.kind = d.event.kind;
+  v.a = d.event.a;
+  v.b = d.event.b;
+  v.feature = d.event.feature;
+  v.sequence = d.event.sequence;
+  for (const BallChange<Real>& c : d.outcome.balls())
+    v.balls.push_back(BallView{c.ball, nameOf(names, c.ball), exact(c.position.x), exact(c.position.y),
+                               exact(c.velocityAfter.x), exact(c.velocityAfter.y), exact(c.velocityBefore.x),
+                               exact(c.velocityBefore.y)});
+  v.gizmo = d.gizmo;
+  v.other = d.other;
+  v.key = d.key;
+  v.direction = d.direction;
+  v.rule = d.rule;
+  return v;
+}
+
+// Every decision of one chunk payload, with the byte range each record took.
+template <class Real>
+struct DecodedChunk {
+  OpenedChunk<Real> opened;
+  std::vector<Decision<Real>> decisions;
+  std::vector<std::pair<std::size_t, std::size_t>> spans;
+};
+template <class Real>
+DecodedChunk<Real> decodeChunk(std::span<const std::uint8_t> payload, const PhysicsParams<Real>& params) {
+  DecodedChunk<Real> c;
+  c.opened = openChunk<Real>(payload);
+  ChunkRecords<Real> records(payload, c.opened, params);
+  while (!records.atEnd()) {
+    const std::size_t from = records.position();
+    c.decisions.push_back(records.next());
+    c.spans.emplace_back(from, records.position());
+  }
+  return c;
+}
+
+template <class Real>
+PhysicsParams<Real> paramsOf(const OpenedLog& log) {
+  return readParams<Real>(log.header.params);
+}
+
+// --- recording -----------------------------------------------------------------------------------
+
+template <class Real>
+RecordResult recordAs(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink) {
+  std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(request);
+  const LogHeader header = headerFor(request, precisionName(precision), scalarName<Real>(), paramBytes(board->params()));
+  sink.header(encodeHeader(header));
+  Recorder<Real> recorder(sink, *board);
+  board->setObserver(&recorder);
+  RecordResult result;
+  try {
+    continueRun(*board, request, 0);
+  } catch (const StallError& e) {
+    result.completed = false;
+    result.error = e.what();
+  }
+  recorder.finish(result.completed, result.error);
+  result.summary = summarize(*board);
+  return result;
+}
+
+// --- walking -------------------------------------------------------------------------------------
+
+}  // namespace
+
+class DecisionStream::Source {
+ public:
+  virtual ~Source() = default;
+  virtual std::optional<DecisionView> next() = 0;
+};
+
+namespace {
+
+template <class Real>
+class StreamAs final : public DecisionStream::Source {
+ public:
+  StreamAs(const OpenedLog& log, double fromTime) : log_(log), params_(paramsOf<Real>(log)) {
+    const std::vector<ChunkEntry>& chunks = log.reader.chunks();
+    while (chunk_ + 1 < chunks.size() && chunks[chunk_ + 1].time <= fromTime) ++chunk_;
+  }
+  std::optional<DecisionView> next() override {
+    while (!records_ || records_->atEnd()) {
+      if (chunk_ >= log_.reader.chunks().size()) return std::nullopt;
+      payload_ = log_.reader.chunkPayload(chunk_++);
+      opened_ = openChunk<Real>(payload_);
+      records_.emplace(payload_, opened_, params_);
+      index_ = opened_.preamble.decisionsDone;
+      events_ = opened_.preamble.eventsDone;
+    }
+    const Decision<Real> d = records_->next();
+    DecisionView v = viewOf(d, index_++, events_, log_.gizmoNames);
+    if (d.type == DecisionType::Executed) ++events_;
+    return v;
+  }
+
+ private:
+  const OpenedLog& log_;
+  PhysicsParams<Real> params_;
+  std::size_t chunk_ = 0;
+  std::vector<std::uint8_t> payload_;
+  OpenedChunk<Real> opened_;
+  std::optional<ChunkRecords<Real>> records_;
+  std::uint64_t index_ = 0, events_ = 0;
+};
+
+// --- states ----------------------------------------------------------------------------------------
+
+template <class Real>
+StateView stateOf(const GameBoard<Real>& board, const Real& at, const std::vector<std::string>& names) {
+  StateView s;
+  s.time = exact(at);
+  s.events = board.executedTotal();
+  for (GizmoId id : board.ballIds()) {
+    const Ball<Real>& b = *board.gizmo(id).asBall();
+    const Vec2<Real> p = b.positionAt(at), v = b.velocityAt(at);
+    s.balls.push_back(BallView{id, nameOf(names, id), exact(p.x), exact(p.y), exact(v.x), exact(v.y), {}, {}});
+  }
+  for (const Event<Real>& e : board.pendingEvents()) {
+    std::string line = exactText(e.time) + " " + std::string(eventKindName(e.kind));
+    if (e.a != kNoGizmo) line += " " + nameOf(names, e.a);
+    if (e.b != kNoGizmo && e.kind != EventKind::Input) line += " " + nameOf(names, e.b);
+    if (e.kind == EventKind::Collision) line += " feature " + std::to_string(e.feature);
+    if (e.kind == EventKind::Input) line += (e.b ? " up " : " down ") + std::to_string(e.feature);
+    s.queue.push_back(line);
+  }
+  return s;
+}
+
+// A board of the log's run at the start of chunk i, its keyframe restored and checked.
+template <class Real>
+std::unique_ptr<GameBoard<Real>> boardAtChunk(const OpenedLog& log, std::size_t i, std::uint64_t* ticksDone) {
+  const std::vector<std::uint8_t> payload = log.reader.chunkPayload(i);
+  const OpenedChunk<Real> opened = openChunk<Real>(payload);
+  std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(log.request);
+  if (opened.keyframe) {
+    try {
+      board->restoreState(*opened.keyframe);
+    } catch (const StateError& e) {
+      throw FormatError(std::string("chunk ") + std::to_string(i) + ": keyframe does not fit the board: " + e.what(),
+                        log.reader.chunks()[i].offset);
+    }
+    if (stateHash(stateBytes(board->saveState())) != opened.keyframeHash)
+      throw FormatError("chunk " + std::to_string(i) + ": the restored keyframe does not hash as recorded",
+                        log.reader.chunks()[i].offset);
+  }
+  *ticksDone = opened.preamble.ticksDone;
+  return board;
+}
+
+template <class Real>
+StateView seekAs(const OpenedLog& log, const SeekTarget& target) {
+  const std::vector<ChunkEntry>& chunks = log.reader.chunks();
+  if (chunks.empty()) throw FormatError("the log holds no chunk", 0);
+  std::size_t i = 0;
+  while (i + 1 < chunks.size() &&
+         (target.events ? chunks[i + 1].eventsDone <= *target.events : chunks[i + 1].time <= *target.time))
+    ++i;
+  std::uint64_t ticksDone = 0;
+  std::unique_ptr<GameBoard<Real>> board = boardAtChunk<Real>(log, i, &ticksDone);
+  if (target.time && Real(fromDouble<Real>(*target.time)) < board->now() && i > 0)
+    board = boardAtChunk<Real>(log, --i, &ticksDone);
+  typename GameBoard<Real>::RunLimit limit;
+  if (target.events) limit.events = *target.events;
+  if (target.time) limit.time = fromDouble<Real>(*target.time);
+  board->setRunLimit(limit);
+  continueRun(*board, log.request, std::int64_t(ticksDone));
+  if (target.events && board->executedTotal() != *target.events)
+    throw std::out_of_range("the run has " + std::to_string(board->executedTotal()) + " events, fewer than " +
+                            std::to_string(*target.events));
+  const Real at = target.time ? maxOf(Real(fromDouble<Real>(*target.time)), board->now()) : board->now();
+  return stateOf(*board, at, log.gizmoNames);
+}
+
+// --- replaying -------------------------------------------------------------------------------------
+
+// Compares each chunk of the new run with the log's as it is made.
+class ComparingSink final : public ChunkSink {
+ public:
+  struct Parted {};   // the runs differ in chunk `chunk`
+  struct LogEnds {};  // the log was cut off and everything it holds matched
+
+  explicit ComparingSink(const LogReader& log) : log_(log) {}
+  void header(std::span<const std::uint8_t> payload) override {
+    if (!std::equal(payload.begin(), payload.end(), log_.headerPayload().begin(), log_.headerPayload().end()))
+      headerDiffers = true;
+  }
+  void chunk(std::span<const std::uint8_t> payload, const ChunkEntry&) override {
+    const std::size_t i = chunks++;
+    if (i >= log_.chunks().size()) {
+      if (!log_.end()) throw LogEnds{};
+      ours.assign(payload.begin(), payload.end());
+      throw Parted{};
+    }
+    const std::vector<std::uint8_t> theirs = log_.chunkPayload(i);
+    if (!std::equal(payload.begin(), payload.end(), theirs.begin(), theirs.end())) {
+      ours.assign(payload.begin(), payload.end());
+      throw Parted{};
+    }
+  }
+  void finish(const RunEnd& end) override { ended = end; }
+
+  bool headerDiffers = false;
+  std::size_t chunks = 0;
+  std::vector<std::uint8_t> ours;
+  std::optional<RunEnd> ended;
+
+ private:
+  const LogReader& log_;
+};
+
+// The latest state of each ball that a chunk's decisions show, up to decision `upTo`.
+template <class Real>
+StateView stateFromRecords(const DecodedChunk<Real>& c, std::size_t upTo, const std::vector<std::string>& names) {
+  StateView s;
+  std::uint64_t events = c.opened.preamble.eventsDone;
+  Real time = c.opened.keyframe ? c.opened.keyframe->now : Real(0);
+  std::map<GizmoId, BallView> balls;
+  for (std::size_t k = 0; k < upTo && k < c.decisions.size(); ++k) {
+    const Decision<Real>& d = c.decisions[k];
+    time = d.time;
+    if (d.type != DecisionType::Executed) continue;
+    ++events;
+    for (const BallChange<Real>& ch : d.outcome.balls())
+      balls[ch.ball] = BallView{ch.ball, nameOf(names, ch.ball), exact(ch.position.x), exact(ch.position.y),
+                                exact(ch.velocityAfter.x), exact(ch.velocityAfter.y), exact(ch.velocityBefore.x),
+                                exact(ch.velocityBefore.y)};
+  }
+  s.time = exact(time);
+  s.events = events;
+  for (auto& [id, b] : balls) s.balls.push_back(b);
+  return s;
+}
+
+template <class Real>
+void explainParting(const OpenedLog& log, ComparingSink& sink, ReplayReport& report) {
+  const PhysicsParams<Real> params = paramsOf<Real>(log);
+  const std::size_t i = sink.chunks - 1;
+  const DecodedChunk<Real> ours = decodeChunk<Real>(sink.ours, params);
+  if (i >= log.reader.chunks().size()) {
+    report.where = "the run goes on after the log's last chunk";
+    report.runDecision = viewOf(ours.decisions.front(), ours.opened.preamble.decisionsDone,
+                                ours.opened.preamble.eventsDone, log.gizmoNames);
+    return;
+  }
+  const std::vector<std::uint8_t> theirBytes = log.reader.chunkPayload(i);
+  const DecodedChunk<Real> theirs = decodeChunk<Real>(theirBytes, params);
+  if (!std::equal(sink.ours.begin(), sink.ours.begin() + std::ptrdiff_t(ours.opened.recordsAt), theirBytes.begin(),
+                  theirBytes.begin() + std::ptrdiff_t(theirs.opened.recordsAt))) {
+    report.where = "chunk " + std::to_string(i) + " starts from a different state (keyframe)";
+    return;
+  }
+  auto recordBytes = [](const std::vector<std::uint8_t>& all, const std::pair<std::size_t, std::size_t>& s) {
+    return std::span<const std::uint8_t>(all.data() + s.first, s.second - s.first);
+  };
+  std::size_t k = 0;
+  std::uint64_t events = ours.opened.preamble.eventsDone;
+  const std::size_t n = std::min(ours.decisions.size(), theirs.decisions.size());
+  while (k < n) {
+    const auto a = recordBytes(sink.ours, ours.spans[k]), b = recordBytes(theirBytes, theirs.spans[k]);
+    if (!std::equal(a.begin(), a.end(), b.begin(), b.end())) break;
+    if (ours.decisions[k].type == DecisionType::Executed) ++events;
+    ++k;
+  }
+  const std::uint64_t index = ours.opened.preamble.decisionsDone + k;
+  if (k < theirs.decisions.size()) report.logDecision = viewOf(theirs.decisions[k], index, events, log.gizmoNames);
+  if (k < ours.decisions.size()) report.runDecision = viewOf(ours.decisions[k], index, events, log.gizmoNames);
+  report.where = k < n ? "decision " + std::to_string(index) + " differs"
+                       : (k < theirs.decisions.size() ? "the run ends before the log" : "the log ends before the run");
+  report.logState = stateFromRecords(theirs, k, log.gizmoNames);
+  report.runState = stateFromRecords(ours, k, log.gizmoNames);
+  report.decisions = index;
+  report.events = events;
+}
+
+template <class Real>
+ReplayReport replayAs(const OpenedLog& log) {
+  ReplayReport report;
+  ComparingSink sink(log.reader);
+  std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(log.request);
+  if (paramBytes(board->params()) != log.header.params) {
+    report.identical = false;
+    report.where = "this build derives different simulation parameters from the log's board";
+    return report;
+  }
+  Recorder<Real> recorder(sink, *board);
+  board->setObserver(&recorder);
+  bool completed = true;
+  std::string error;
+  try {
+    try {
+      continueRun(*board, log.request, 0);
+    } catch (const StallError& e) {
+      completed = false;
+      error = e.what();
+    }
+    recorder.finish(completed, error);
+  } catch (const ComparingSink::LogEnds&) {
+    report.note = log.reader.truncation() + "; every decision it holds replays identically";
+    report.events = log.reader.chunks().empty() ? 0 : board->executedTotal();
+    return report;
+  } catch (const ComparingSink::Parted&) {
+    report.identical = false;
+    explainParting<Real>(log, sink, report);
+    return report;
+  }
+  if (sink.chunks != log.reader.chunks().size()) {
+    report.identical = false;
+    report.where = "the run made " + std::to_string(sink.chunks) + " chunks, the log has " +
+                   std::to_string(log.reader.chunks().size());
+    return report;
+  }
+  if (log.reader.end() && sink.ended &&
+      (log.reader.end()->completed != sink.ended->completed || log.reader.end()->events != sink.ended->events)) {
+    report.identical = false;
+    report.where = "the run ends differently: " + (sink.ended->completed ? std::string("completed") : sink.ended->message);
+    return report;
+  }
+  if (sink.headerDiffers) report.note = "the header was written by another version (" + log.header.toolkit + ")";
+  if (!log.reader.truncation().empty()) report.note = log.reader.truncation();
+  report.events = board->executedTotal();
+  return report;
+}
+
+template <class F>
+decltype(auto) withLogScalar(const OpenedLog& log, F&& f) {
+  return withPrecision(log.precision, [&]<class Real>() -> decltype(auto) {
+    if (scalarName<Real>() != log.header.scalar)
+      throw FormatError("the log was made with " + log.header.scalar + ", this build computes " + scalarName<Real>(), 0);
+    return f.template operator()<Real>();
+  });
+}
+
+}  // namespace
+
+RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink) {
+  return withPrecision(precision, [&]<class Real>() { return recordAs<Real>(request, precision, sink); });
+}
+
+OpenedLog openLog(std::unique_ptr<ByteSource> source, bool verifyChecksums) {
+  LogReader reader(std::move(source), verifyChecksums);
+  LogHeader header = decodeHeader(reader.headerPayload());
+  RunRequest request = requestOf(header);
+  const std::optional<PrecisionChoice> precision = parsePrecision(header.precision);
+  if (!precision) throw FormatError("header: unknown precision '" + header.precision + "'", 0);
+  std::vector<std::string> names;
+  const auto board = buildBoard<double>(request.board, PhysicsParams<double>());
+  for (std::size_t g = 0; g < board->gizmoCount(); ++g) names.push_back(board->gizmo(GizmoId(g)).name());
+  return OpenedLog{std::move(reader), std::move(header), std::move(request), *precision, std::move(names)};
+}
+
+OpenedLog openLog(const std::string& path) {
+  try {
+    return openLog(ByteSource::file(path));
+  } catch (const FormatError& e) {
+    throw FormatError(path + ": " + e.what(), e.offset());
+  }
+}
+
+DecisionStream::DecisionStream(const OpenedLog& log, double fromTime)
+    : source_(withLogScalar(log, [&]<class Real>() -> std::unique_ptr<Source> {
+        return std::make_unique<StreamAs<Real>>(log, fromTime);
+      })) {}
+DecisionStream::~DecisionStream() = default;
+DecisionStream::DecisionStream(DecisionStream&&) noexcept = default;
+std::optional<DecisionView> DecisionStream::next() { return source_->next(); }
+
+ReplayReport replayLog(const OpenedLog& log) {
+  return withLogScalar(log, [&]<class Real>() { return replayAs<Real>(log); });
+}
+
+StateView seekLog(const OpenedLog& log, const SeekTarget& target) {
+  return withLogScalar(log, [&]<class Real>() { return seekAs<Real>(log, target); });
+}
+
+}  // namespace gizmo::replay
