@@ -37,6 +37,16 @@ inline std::int64_t unzigzag(std::uint64_t u) {
   return static_cast<std::int64_t>((u >> 1) ^ (0 - (u & 1)));
 }
 
+// LEB128 stored at p, which must have room for kMaxVarintBytes; returns the end.
+[[gnu::always_inline]] inline std::uint8_t* putVarint(std::uint8_t* p, std::uint64_t v) {
+  while (v >= 0x80) {
+    *p++ = static_cast<std::uint8_t>(v | 0x80);
+    v >>= 7;
+  }
+  *p++ = static_cast<std::uint8_t>(v);
+  return p;
+}
+
 }  // namespace detail
 
 // The longest LEB128 encoding of a 64-bit number: ceil(64 / 7) bytes.
@@ -50,7 +60,7 @@ class ByteWriter {
   ByteWriter() = default;
   explicit ByteWriter(std::size_t initialCapacity) : buffer_(initialCapacity) {}
 
-  void u8(std::uint8_t v) {
+  [[gnu::always_inline]] void u8(std::uint8_t v) {
     ensure(1);
     buffer_[used_++] = v;
   }
@@ -59,7 +69,7 @@ class ByteWriter {
   void u64(std::uint64_t v) { littleEndian(v, 8); }
 
   // The low `width` (0..8) bytes of `v`, lowest first.
-  void littleEndian(std::uint64_t v, std::size_t width) {
+  [[gnu::always_inline]] void littleEndian(std::uint64_t v, std::size_t width) {
     // Storing all 8 bytes lets the compiler emit one store whatever the width; the bytes beyond
     // `width` lie in spare capacity and are overwritten by the next write.
     ensure(8);
@@ -68,26 +78,26 @@ class ByteWriter {
   }
 
   // Unsigned LEB128: 7 bits per byte, lowest group first, high bit set on all but the last byte.
-  void varint(std::uint64_t v) {
-    ensure(kMaxVarintBytes);
-    std::uint8_t* out = buffer_.data() + used_;
-    std::size_t n = 0;
-    while (v >= 0x80) {
-      out[n++] = static_cast<std::uint8_t>(v | 0x80);
-      v >>= 7;
-    }
-    out[n++] = static_cast<std::uint8_t>(v);
-    used_ += n;
-  }
+  [[gnu::always_inline]] void varint(std::uint64_t v) { commit(detail::putVarint(claim(kMaxVarintBytes), v)); }
 
   // Zigzag, then LEB128.
-  void svarint(std::int64_t v) { varint(detail::zigzag(v)); }
+  [[gnu::always_inline]] void svarint(std::int64_t v) { varint(detail::zigzag(v)); }
 
-  void bytes(const void* data, std::size_t count) {
+  [[gnu::always_inline]] void bytes(const void* data, std::size_t count) {
     if (count == 0) return;  // data may then be null, which memcpy does not allow
     ensure(count);
     std::memcpy(buffer_.data() + used_, data, count);
     used_ += count;
+  }
+
+  // For a run of writes of bounded total size: claim room once, store through the pointer, then
+  // commit where the stores end. Nothing else may write in between.
+  [[gnu::always_inline]] std::uint8_t* claim(std::size_t n) {
+    ensure(n);
+    return buffer_.data() + used_;
+  }
+  [[gnu::always_inline]] void commit(const std::uint8_t* end) {
+    used_ = static_cast<std::size_t>(end - buffer_.data());
   }
 
   // Bytes written since construction or the last clear().
@@ -100,10 +110,11 @@ class ByteWriter {
   }
 
  private:
-  void ensure(std::size_t extra) {
+  [[gnu::always_inline]] void ensure(std::size_t extra) {
     if (buffer_.size() - used_ < extra) grow(extra);
   }
-  void grow(std::size_t extra) {
+  // Out of line and cold, so that the writes above stay small enough to inline.
+  [[gnu::noinline, gnu::cold]] void grow(std::size_t extra) {
     std::size_t capacity = buffer_.size() < 64 ? 64 : buffer_.size() * 2;
     if (capacity - used_ < extra) capacity = used_ + extra;
     buffer_.resize(capacity);

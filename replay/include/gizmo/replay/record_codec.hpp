@@ -45,8 +45,46 @@ struct RecordContext {
   }
 };
 
+// One record being written. For fixed-width scalars a record's largest size is known, so room
+// is claimed once and every byte is stored without further checks; MPFR values, whose size is
+// not known in advance, go through the writer and the room is claimed again after each.
+template <class Real>
+class RecordOut {
+ public:
+  static constexpr std::size_t kScalar = kMaxCompactBytes<Real>;
+  RecordOut(ByteWriter& w, std::size_t room) : w_(w), room_(room), p_(w.claim(room)) {}
+  ~RecordOut() { w_.commit(p_); }
+  RecordOut(const RecordOut&) = delete;
+  RecordOut& operator=(const RecordOut&) = delete;
+
+  void u8(std::uint8_t v) { *p_++ = v; }
+  void varint(std::uint64_t v) { p_ = detail::putVarint(p_, v); }
+  void svarint(std::int64_t v) { varint(detail::zigzag(v)); }
+  void scalar(const Real& value, const Real& base) {
+    if constexpr (kScalar > 0) {
+      p_ = putScalar(p_, value, base);
+    } else {
+      w_.commit(p_);
+      writeScalar(w_, value, base);
+      p_ = w_.claim(room_);
+    }
+  }
+  void vec(const Vec2<Real>& v, const Vec2<Real>& base) {
+    scalar(v.x, base.x);
+    scalar(v.y, base.y);
+  }
+
+ private:
+  ByteWriter& w_;
+  std::size_t room_;
+  std::uint8_t* p_;
+};
+
 template <class Real>
 class RecordEncoder {
+  using Out = RecordOut<Real>;
+  static constexpr std::size_t kScalar = Out::kScalar, kVarint = kMaxVarintBytes;
+
  public:
   RecordEncoder(ByteWriter& out, const PhysicsParams<Real>& params) : out_(out) {
     c_.maxTick = params.maxTick;
@@ -55,6 +93,7 @@ class RecordEncoder {
   void reset(const Real& now, std::uint64_t nextSequence) {
     c_.reset(now, nextSequence);
     held_.clear();
+    nowPlusTick_ = c_.now + c_.maxTick;
   }
 
   void scheduled(const Event<Real>& e) {
@@ -67,28 +106,30 @@ class RecordEncoder {
     if (!fits) tag |= kScheduledAllFields;
     std::int64_t k = 0;
     const TimeForm form = timeForm(e, k);
-    out_.u8(static_cast<std::uint8_t>(tag | (static_cast<std::uint8_t>(form) << 3)));
-    if (!fits || f.a) out_.svarint(e.a);
-    if (!fits || f.b) out_.svarint(e.b);
-    if (!fits || f.feature) out_.svarint(e.feature);
-    if (form == TimeForm::FrictionGrid || form == TimeForm::TickGrid) out_.varint(std::uint64_t(k));
-    if (form == TimeForm::Explicit) writeScalar(out_, e.time, c_.now);
+    Out o(out_, 1 + 4 * kVarint + kScalar);
+    o.u8(static_cast<std::uint8_t>(tag | (static_cast<std::uint8_t>(form) << 3)));
+    if (!fits || f.a) o.svarint(e.a);
+    if (!fits || f.b) o.svarint(e.b);
+    if (!fits || f.feature) o.svarint(e.feature);
+    if (form == TimeForm::FrictionGrid || form == TimeForm::TickGrid) o.varint(std::uint64_t(k));
+    if (form == TimeForm::Explicit) o.scalar(e.time, c_.now);
   }
 
   void removed(const Event<Real>& e) {
     flushHeld();
     const std::uint64_t d = distance(e);
+    Out o(out_, 1 + kVarint);
     if (d < 15) {
-      out_.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Removed) | d));
+      o.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Removed) | d));
     } else {
-      out_.u8(static_cast<std::uint8_t>(RecordType::Removed) | 15);
-      out_.varint(d - 15);
+      o.u8(static_cast<std::uint8_t>(RecordType::Removed) | 15);
+      o.varint(d - 15);
     }
   }
 
-  void executed(const Event<Real>& e, const EventOutcome<Real>& o) {
-    c_.now = e.time;
-    const std::span<const BallChange<Real>> changes = o.balls();
+  void executed(const Event<Real>& e, const EventOutcome<Real>& outcome) {
+    setNow(e.time);
+    const std::span<const BallChange<Real>> changes = outcome.balls();
     bool forA = false, forB = false;
     std::size_t i = 0;
     if (i < changes.size() && changes[i].ball == e.a) forA = true, ++i;
@@ -98,14 +139,17 @@ class RecordEncoder {
     std::uint8_t tag = static_cast<std::uint8_t>(RecordType::Executed);
     if (forA) tag |= 8;
     if (forB) tag |= 4;
-    out_.u8(static_cast<std::uint8_t>(tag | (d < 3 ? d : 3)));
-    if (d >= 3) out_.varint(d - 3);
-    for (const BallChange<Real>& ch : changes) {
-      writeVec(ch.position, c_.lastPosition);
-      writeVec(ch.velocityBefore, c_.lastVelocity);
-      writeVec(ch.velocityAfter, ch.velocityBefore);
-      c_.lastPosition = ch.position;
-      c_.lastVelocity = ch.velocityAfter;
+    {
+      Out o(out_, 1 + kVarint + 12 * kScalar);
+      o.u8(static_cast<std::uint8_t>(tag | (d < 3 ? d : 3)));
+      if (d >= 3) o.varint(d - 3);
+      for (const BallChange<Real>& ch : changes) {
+        o.vec(ch.position, c_.lastPosition);
+        o.vec(ch.velocityBefore, c_.lastVelocity);
+        o.vec(ch.velocityAfter, ch.velocityBefore);
+        c_.lastPosition = ch.position;
+        c_.lastVelocity = ch.velocityAfter;
+      }
     }
     flushHeld();  // what the event did, after the event
   }
@@ -115,26 +159,26 @@ class RecordEncoder {
   // record, which sets the current time they share; only a report that is not followed by its
   // event needs a time record of its own.
   void trigger(const Real& t, GizmoId source, GizmoId target) {
-    ByteWriter& w = hold(t);
-    w.u8(static_cast<std::uint8_t>(RecordType::Trigger));
-    w.svarint(source);
-    w.svarint(target);
+    Out o(hold(t), 1 + 2 * kVarint);
+    o.u8(static_cast<std::uint8_t>(RecordType::Trigger));
+    o.svarint(source);
+    o.svarint(target);
   }
   void action(const Real& t, GizmoId target) {
-    ByteWriter& w = hold(t);
-    w.u8(static_cast<std::uint8_t>(RecordType::Action));
-    w.svarint(target);
+    Out o(hold(t), 1 + kVarint);
+    o.u8(static_cast<std::uint8_t>(RecordType::Action));
+    o.svarint(target);
   }
   void input(const Real& t, int key, KeyDirection d) {
-    ByteWriter& w = hold(t);
-    w.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Input) | (d == KeyDirection::Up)));
-    w.svarint(key);
+    Out o(hold(t), 1 + kVarint);
+    o.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Input) | (d == KeyDirection::Up)));
+    o.svarint(key);
   }
   void rule(const Real& t, ModelRule r, GizmoId g, GizmoId other) {
-    ByteWriter& w = hold(t);
-    w.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Rule) | static_cast<std::uint8_t>(r)));
-    w.svarint(g);
-    w.svarint(other);
+    Out o(hold(t), 1 + 2 * kVarint);
+    o.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Rule) | static_cast<std::uint8_t>(r)));
+    o.svarint(g);
+    o.svarint(other);
   }
   void tick(const Real& t) {
     flushHeld();
@@ -162,37 +206,50 @@ class RecordEncoder {
     held_.clear();
   }
 
+  void setNow(const Real& t) {
+    if (t == c_.now) return;
+    c_.now = t;
+    nowPlusTick_ = c_.now + c_.maxTick;
+  }
   // Reports carry the time of the event they belong to; anything else is written as a move of
   // the current time first, so that nothing is lost.
   void at(const Real& t) {
     if (t == c_.now) return;
-    out_.u8(static_cast<std::uint8_t>(RecordType::Time));
-    writeScalar(out_, t, c_.now);
-    c_.now = t;
+    {
+      Out o(out_, 1 + kScalar);
+      o.u8(static_cast<std::uint8_t>(RecordType::Time));
+      o.scalar(t, c_.now);
+    }
+    setNow(t);
   }
 
-  TimeForm timeForm(const Event<Real>& e, std::int64_t& k) const {
+  TimeForm timeForm(const Event<Real>& e, std::int64_t& k) {
     if (e.time == c_.now) return TimeForm::Now;
-    if (e.time == Real(c_.now + c_.maxTick)) return TimeForm::NowPlusTick;
-    if (e.kind == EventKind::FrictionTick && onGrid(e.time, c_.frictionStep, k)) return TimeForm::FrictionGrid;
-    if (e.kind == EventKind::EndOfTick && onGrid(e.time, c_.maxTick, k)) return TimeForm::TickGrid;
+    if (e.time == nowPlusTick_) return TimeForm::NowPlusTick;
+    if (e.kind == EventKind::FrictionTick && onGrid(e.time, c_.frictionStep, lastFrictionK_, k)) return TimeForm::FrictionGrid;
+    if (e.kind == EventKind::EndOfTick && onGrid(e.time, c_.maxTick, lastTickK_, k)) return TimeForm::TickGrid;
     return TimeForm::Explicit;
   }
-  static bool onGrid(const Real& t, const Real& step, std::int64_t& k) {
+  // Whether t = k·step for a whole k; the k after the last one found is tried first, which
+  // spares a division nearly always.
+  static bool onGrid(const Real& t, const Real& step, std::int64_t& last, std::int64_t& k) {
+    if (Real(Real(last + 1) * step) == t) {
+      k = ++last;
+      return true;
+    }
     if (!(Real(0) < step) || !(Real(0) <= t)) return false;
     const double q = toDouble(Real(t / step));
     if (!(q < 9.0e15)) return false;
     k = static_cast<std::int64_t>(q + 0.5);
-    return Real(Real(k) * step) == t;
-  }
-
-  void writeVec(const Vec2<Real>& v, const Vec2<Real>& base) {
-    writeScalar(out_, v.x, base.x);
-    writeScalar(out_, v.y, base.y);
+    if (!(Real(Real(k) * step) == t)) return false;
+    last = k;
+    return true;
   }
 
   ByteWriter& out_;
   RecordContext<Real> c_;
+  Real nowPlusTick_{0};
+  std::int64_t lastFrictionK_ = 0, lastTickK_ = 0;
   ByteWriter held_;
   Real heldTime_{0};
 };

@@ -155,18 +155,22 @@ concept HasCanonicalCheck = requires(const std::array<std::uint8_t, ScalarCodec<
   { ScalarCodec<Real>::isCanonical(b) } -> std::same_as<bool>;
 };
 
-// The compact XOR form on a word of sizeof(UInt) bytes (float, double).
+// The compact XOR form on a word of sizeof(UInt) bytes (float, double), stored at p, which must
+// have room for 1 + sizeof(UInt) bytes (the whole word is stored; the bytes past the end are
+// overwritten by what follows). Returns the end.
 template <class UInt>
-inline void writeXorWord(ByteWriter& out, UInt x) {
+[[gnu::always_inline]] inline std::uint8_t* putXorWord(std::uint8_t* p, UInt x) {
   constexpr unsigned kWidth = sizeof(UInt);
   if (x == 0) {
-    out.u8(kSameAsBase);
-    return;
+    *p = kSameAsBase;
+    return p + 1;
   }
   const unsigned lead = static_cast<unsigned>(std::countl_zero(x)) / 8;
   const unsigned trail = static_cast<unsigned>(std::countr_zero(x)) / 8;
-  out.u8(static_cast<std::uint8_t>(lead << 4 | trail));
-  out.littleEndian(x >> (8 * trail), kWidth - lead - trail);
+  *p = static_cast<std::uint8_t>(lead << 4 | trail);
+  const UInt middle = static_cast<UInt>(x >> (8 * trail));
+  storeLittleEndian(p + 1, middle, kWidth);
+  return p + 1 + (kWidth - lead - trail);
 }
 
 template <class UInt>
@@ -186,22 +190,23 @@ inline UInt readXorWord(ByteReader& in) {
   return static_cast<UInt>(middle << (8 * trail));
 }
 
-// The same form on byte arrays (long double, Float128).
+// The same form on byte arrays (long double, Float128), stored at p (room for 1 + Width bytes).
 template <std::size_t Width>
-inline void writeXorBytes(ByteWriter& out, const std::array<std::uint8_t, Width>& value,
-                          const std::array<std::uint8_t, Width>& base) {
+inline std::uint8_t* putXorBytes(std::uint8_t* p, const std::array<std::uint8_t, Width>& value,
+                                 const std::array<std::uint8_t, Width>& base) {
   std::array<std::uint8_t, Width> x;
   for (std::size_t i = 0; i < Width; ++i) x[i] = value[i] ^ base[i];
   std::size_t trail = 0;
   while (trail < Width && x[trail] == 0) ++trail;
   if (trail == Width) {
-    out.u8(kSameAsBase);
-    return;
+    *p = kSameAsBase;
+    return p + 1;
   }
   std::size_t lead = 0;
   while (x[Width - 1 - lead] == 0) ++lead;
-  out.u8(static_cast<std::uint8_t>(lead << 4 | trail));
-  out.bytes(x.data() + trail, Width - lead - trail);
+  *p = static_cast<std::uint8_t>(lead << 4 | trail);
+  std::memcpy(p + 1, x.data() + trail, Width - lead - trail);
+  return p + 1 + (Width - lead - trail);
 }
 
 template <std::size_t Width>
@@ -222,17 +227,29 @@ inline std::array<std::uint8_t, Width> readXorBytes(ByteReader& in,
 
 }  // namespace detail
 
+// The most bytes the compact form of a fixed-width scalar takes; 0 for MpfrReal, whose size
+// depends on the value.
+template <class Real>
+inline constexpr std::size_t kMaxCompactBytes = 0;
+template <class Real>
+  requires detail::FixedWidthCodec<Real>
+inline constexpr std::size_t kMaxCompactBytes<Real> = 1 + ScalarCodec<Real>::kWidth;
+
+// The compact form of a fixed-width scalar stored at p, which must have room for
+// kMaxCompactBytes<Real>; returns the end. For runs of writes claimed at once (ByteWriter::claim).
+template <class Real>
+  requires detail::FixedWidthCodec<Real>
+[[gnu::always_inline]] inline std::uint8_t* putScalar(std::uint8_t* p, const Real& value, const Real& base) {
+  using Codec = ScalarCodec<Real>;
+  if constexpr (detail::WordCodec<Real>) return detail::putXorWord(p, Codec::toBits(value) ^ Codec::toBits(base));
+  else return detail::putXorBytes(p, Codec::toBytes(value), Codec::toBytes(base));
+}
+
 // Writes `value` in the compact form relative to `base` (ignored for MpfrReal).
 template <class Real>
 inline void writeScalar(ByteWriter& out, const Real& value, const Real& base) {
-  using Codec = ScalarCodec<Real>;
-  if constexpr (detail::WordCodec<Real>) {
-    detail::writeXorWord(out, Codec::toBits(value) ^ Codec::toBits(base));
-  } else if constexpr (detail::FixedWidthCodec<Real>) {
-    detail::writeXorBytes(out, Codec::toBytes(value), Codec::toBytes(base));
-  } else {
-    Codec::write(out, value);
-  }
+  if constexpr (detail::FixedWidthCodec<Real>) out.commit(putScalar(out.claim(kMaxCompactBytes<Real>), value, base));
+  else ScalarCodec<Real>::write(out, value);
 }
 
 // Reads what writeScalar(out, value, base) wrote, given the same base; throws FormatError on a

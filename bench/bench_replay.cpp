@@ -1,0 +1,127 @@
+// The replay log's costs, each against the same run unrecorded in the same process: recording
+// (to a sink that keeps nothing, and to a file), replaying (re-simulating and comparing every
+// chunk), seeking to the middle of a long log, and the log's size per executed event.
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "bench_boards.hpp"
+#include "gizmo/replay/replay.hpp"
+
+namespace gizmo::bench {
+namespace {
+
+constexpr double kBoardSeconds = 60.0;
+
+RunRequest request(const BoardSpec& board, double seconds = kBoardSeconds) {
+  RunRequest r;
+  r.board = board;
+  r.model = MotionModel::Ballistic;
+  r.duration = seconds;
+  return r;
+}
+
+// Counts the bytes and drops them: the cost of making the log without the file system.
+class CountingSink final : public replay::ChunkSink {
+ public:
+  void header(std::span<const std::uint8_t> p) override { bytes += p.size(); }
+  void chunk(std::span<const std::uint8_t> p, const replay::ChunkEntry&) override { bytes += p.size(); }
+  void finish(const replay::RunEnd&) override {}
+  std::uint64_t bytes = 0;
+};
+
+std::string logPath(const char* name) {
+  return (std::filesystem::temp_directory_path() / (std::string("gizmo-bench-") + name + ".gzlog")).string();
+}
+
+void counters(benchmark::State& state, std::uint64_t events, std::uint64_t bytes) {
+  state.counters["events/s"] = benchmark::Counter(double(events), benchmark::Counter::kIsRate);
+  if (bytes) state.counters["bytes/event"] = double(bytes) / double(events);
+}
+
+void unrecorded(benchmark::State& state, const BoardSpec& board) {
+  const RunRequest r = request(board);
+  std::uint64_t events = 0;
+  for (auto _ : state) events += simulate<double>(r).total;
+  counters(state, events, 0);
+}
+
+void recordedInMemory(benchmark::State& state, const BoardSpec& board) {
+  const RunRequest r = request(board);
+  std::uint64_t events = 0, bytes = 0;
+  for (auto _ : state) {
+    CountingSink sink;
+    events += replay::recordRun(r, PrecisionChoice{}, sink).summary.total;
+    bytes += sink.bytes;
+  }
+  counters(state, events, bytes);
+}
+
+void recordedToFile(benchmark::State& state, const BoardSpec& board, const char* name) {
+  const RunRequest r = request(board);
+  const std::string path = logPath(name);
+  std::uint64_t events = 0, bytes = 0;
+  for (auto _ : state) {
+    replay::LogWriter writer(path);
+    events += replay::recordRun(r, PrecisionChoice{}, writer).summary.total;
+    bytes += writer.bytesWritten();
+  }
+  counters(state, events, bytes);
+  std::filesystem::remove(path);
+}
+
+void replayed(benchmark::State& state, const BoardSpec& board, const char* name) {
+  const std::string path = logPath(name);
+  {
+    replay::LogWriter writer(path);
+    replay::recordRun(request(board), PrecisionChoice{}, writer);
+  }
+  std::uint64_t events = 0;
+  for (auto _ : state) {
+    const replay::ReplayReport report = replay::replayLog(replay::openLog(path));
+    if (!report.identical) state.SkipWithError("the replay differs from the log");
+    events += report.events;
+  }
+  counters(state, events, 0);
+  std::filesystem::remove(path);
+}
+
+void BM_SpecUnrecorded(benchmark::State& s) { unrecorded(s, specExample()); }
+void BM_SpecRecordedInMemory(benchmark::State& s) { recordedInMemory(s, specExample()); }
+void BM_SpecRecordedToFile(benchmark::State& s) { recordedToFile(s, specExample(), "spec"); }
+void BM_SpecReplayed(benchmark::State& s) { replayed(s, specExample(), "spec-replay"); }
+void BM_CrowdedUnrecorded(benchmark::State& s) { unrecorded(s, crowdedBoard()); }
+void BM_CrowdedRecordedToFile(benchmark::State& s) { recordedToFile(s, crowdedBoard(), "crowded"); }
+void BM_CrowdedReplayed(benchmark::State& s) { replayed(s, crowdedBoard(), "crowded-replay"); }
+
+// A log of about a million events (the spec example for 8000 s of board time); each iteration
+// opens it and reaches the state after its middle event.
+void BM_SeekMiddleOfMillionEventLog(benchmark::State& state) {
+  const std::string path = logPath("million");
+  std::uint64_t total = 0;
+  {
+    replay::LogWriter writer(path);
+    total = replay::recordRun(request(specExample(), 8000), PrecisionChoice{}, writer).summary.total;
+  }
+  for (auto _ : state) {
+    const replay::OpenedLog log = replay::openLog(path);
+    const replay::StateView s = replay::seekLog(log, replay::SeekTarget{total / 2, std::nullopt});
+    benchmark::DoNotOptimize(s.balls.size());
+  }
+  state.counters["log_events"] = double(total);
+  state.counters["log_MB"] = double(std::filesystem::file_size(path)) / 1e6;
+  std::filesystem::remove(path);
+}
+
+BENCHMARK(BM_SpecUnrecorded)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SpecRecordedInMemory)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SpecRecordedToFile)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SpecReplayed)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CrowdedUnrecorded)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CrowdedRecordedToFile)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CrowdedReplayed)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SeekMiddleOfMillionEventLog)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace gizmo::bench
