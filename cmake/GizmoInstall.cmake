@@ -1,18 +1,19 @@
-# Installation: the static libraries gizmo_core and gizmo_io with their headers, the `gizmo`
-# command, and a CMake package so that `find_package(gizmo)` gives gizmo::core and gizmo::io
-# (docs/library.md). Paths are relative to the prefix, so an installation can be moved.
+# Installation: the static libraries gizmo_core, gizmo_io and gizmo_replay with their headers,
+# the `gizmo` command, and a CMake package so that `find_package(gizmo)` gives gizmo::core,
+# gizmo::io and gizmo::replay (docs/library.md). Paths are relative to the prefix, so an installation can be moved.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(GIZMO_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/gizmo)
 
-# EXPORT_NAME (core, io) plus the namespace give the same names as the ALIAS targets in the build.
-install(TARGETS gizmo_core gizmo_io EXPORT gizmoTargets
+# EXPORT_NAME (core, io, replay) plus the namespace give the same names as the ALIAS targets in the build.
+install(TARGETS gizmo_core gizmo_io gizmo_replay EXPORT gizmoTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS gizmo RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
-# Every public header; core/io/src holds the private ones.
+# Every public header; the src folders hold the private ones.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/ ${PROJECT_SOURCE_DIR}/core/io/include/
+                  ${PROJECT_SOURCE_DIR}/replay/include/
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.hpp")
 
