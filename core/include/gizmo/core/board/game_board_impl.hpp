@@ -416,11 +416,19 @@ void GameBoard<Real>::scheduleBallEvents(Ball<Real>& b) {
   if (b.resting()) return;
   const GizmoId id = b.id();
   const Real horizon = now_ + params_.maxTick;
-  if (params_.model == MotionModel::Ballistic && (params_.mu != Real(0) || params_.mu2 != Real(0)))
-    schedule(EventKind::FrictionTick, frictionTickTime(b), id, kNoGizmo, -1);
-  if (const std::optional<Real> end = b.contactEndTime(now_, horizon))
+  // Each of these events recomputes the ball; when one comes by the horizon, a recalculate
+  // event would always be removed before it runs, and is not scheduled.
+  bool recomputedInTime = false;
+  if (params_.model == MotionModel::Ballistic && (params_.mu != Real(0) || params_.mu2 != Real(0))) {
+    const Real t = frictionTickTime(b);
+    schedule(EventKind::FrictionTick, t, id, kNoGizmo, -1);
+    recomputedInTime = !(horizon < t);
+  }
+  if (const std::optional<Real> end = b.contactEndTime(now_, horizon)) {
     schedule(EventKind::ContactEnd, *end, id, kNoGizmo, -1);
-  schedule(EventKind::Recalculate, horizon, id, kNoGizmo, -1);
+    recomputedInTime = true;
+  }
+  if (!recomputedInTime) schedule(EventKind::Recalculate, horizon, id, kNoGizmo, -1);
 }
 
 // The first friction time k·h after now on the global grid.
