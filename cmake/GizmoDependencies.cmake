@@ -3,6 +3,21 @@
 set(GIZMO_BOOST_MIN_VERSION 1.74)
 find_package(Boost ${GIZMO_BOOST_MIN_VERSION} REQUIRED)
 find_package(PkgConfig REQUIRED)
+# Boost's float128 includes <quadmath.h>, which only GCC's own include directory holds; clang
+# does not search it. Searched after every other directory, that directory supplies this header
+# and nothing clang has itself (core/CMakeLists.txt adds it to gizmo::core).
+set(GIZMO_QUADMATH_INCLUDE_DIR "")
+if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+  include(CheckIncludeFileCXX)
+  check_include_file_cxx(quadmath.h GIZMO_CLANG_FINDS_QUADMATH)
+  if(NOT GIZMO_CLANG_FINDS_QUADMATH)
+    execute_process(COMMAND gcc -print-file-name=include OUTPUT_VARIABLE GIZMO_QUADMATH_INCLUDE_DIR
+                    OUTPUT_STRIP_TRAILING_WHITESPACE)
+    if(NOT EXISTS "${GIZMO_QUADMATH_INCLUDE_DIR}/quadmath.h")
+      message(FATAL_ERROR "clang needs GCC's quadmath.h (for Boost's float128); install gcc")
+    endif()
+  endif()
+endif()
 pkg_check_modules(GMP REQUIRED IMPORTED_TARGET gmp)
 pkg_check_modules(MPFR REQUIRED IMPORTED_TARGET mpfr)
 find_package(pugixml REQUIRED)

@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <bit>
 #include <cerrno>
 #include <cstring>
@@ -308,6 +309,13 @@ void LogReader::walkFrames(std::uint64_t from) {
       // A complete index without a readable trailer: either the trailer is cut off, or damaged.
       const std::vector<ChunkEntry> walked = chunks_;
       parseIndex(payload);
+      const bool agree = std::equal(walked.begin(), walked.end(), chunks_.begin(), chunks_.end(),
+                                    [](const ChunkEntry& x, const ChunkEntry& y) {
+                                      return x.offset == y.offset && x.eventsDone == y.eventsDone &&
+                                             x.ticksDone == y.ticksDone &&
+                                             std::bit_cast<std::uint64_t>(x.time) == std::bit_cast<std::uint64_t>(y.time);
+                                    });
+      if (!agree) throw FormatError("the index disagrees with the chunks", at);
       chunks_ = walked;
       chunksEnd_ = at;
       if (size - next >= kTrailerSize) throw FormatError("the trailer is corrupt", size - kTrailerSize);

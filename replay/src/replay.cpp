@@ -49,24 +49,13 @@ DecisionView viewOf(const Decision<Real>& d, std::uint64_t index, std::uint64_t 
   return v;
 }
 
-// Every decision of one chunk payload, with the byte range each record took.
-template <class Real>
-struct DecodedChunk {
-  OpenedChunk<Real> opened;
-  std::vector<Decision<Real>> decisions;
-  std::vector<std::pair<std::size_t, std::size_t>> spans;
-};
-template <class Real>
-DecodedChunk<Real> decodeChunk(std::span<const std::uint8_t> payload, const PhysicsParams<Real>& params) {
-  DecodedChunk<Real> c;
-  c.opened = openChunk<Real>(payload);
-  ChunkRecords<Real> records(payload, c.opened, params);
-  while (!records.atEnd()) {
-    const std::size_t from = records.position();
-    c.decisions.push_back(records.next());
-    c.spans.emplace_back(from, records.position());
-  }
-  return c;
+// The most events the run's queue can hold at once (docs/replay-format.md): one per ball and
+// gizmo or ball it can meet, a ball's own few, a flipper stop each, the end of the tick and the
+// inputs. The reader refuses a log that claims more, so that it never holds more than a real
+// run could make it hold.
+std::size_t maxQueued(const OpenedLog& log) {
+  const std::size_t balls = log.request.board.balls.size(), gizmos = log.gizmoNames.size();
+  return (balls + 1) * (gizmos + 8) + log.request.keys.size() + 64;
 }
 
 template <class Real>
@@ -119,7 +108,7 @@ class StreamAs final : public DecisionStream::Source {
       if (chunk_ >= log_.reader.chunks().size()) return std::nullopt;
       payload_ = log_.reader.chunkPayload(chunk_++);
       opened_ = openChunk<Real>(payload_);
-      records_.emplace(payload_, opened_, params_);
+      records_.emplace(payload_, opened_, params_, maxQueued(log_));
       index_ = opened_.preamble.decisionsDone;
       events_ = opened_.preamble.eventsDone;
     }
@@ -244,68 +233,104 @@ class ComparingSink final : public ChunkSink {
   const LogReader& log_;
 };
 
-// The latest state of each ball that a chunk's decisions show, up to decision `upTo`.
+// One side of a parting: a chunk's records read one at a time, with the byte range of the last,
+// and the latest state of each ball they show.
 template <class Real>
-StateView stateFromRecords(const DecodedChunk<Real>& c, std::size_t upTo, const std::vector<std::string>& names) {
-  StateView s;
-  std::uint64_t events = c.opened.preamble.eventsDone;
-  Real time = c.opened.keyframe ? c.opened.keyframe->now : Real(0);
-  std::map<GizmoId, BallView> balls;
-  for (std::size_t k = 0; k < upTo && k < c.decisions.size(); ++k) {
-    const Decision<Real>& d = c.decisions[k];
-    time = d.time;
-    if (d.type != DecisionType::Executed) continue;
-    ++events;
-    for (const BallChange<Real>& ch : d.outcome.balls())
-      balls[ch.ball] = BallView{ch.ball, nameOf(names, ch.ball), exact(ch.position.x), exact(ch.position.y),
-                                exact(ch.velocityAfter.x), exact(ch.velocityAfter.y), exact(ch.velocityBefore.x),
-                                exact(ch.velocityBefore.y)};
-  }
-  s.time = exact(time);
-  s.events = events;
-  for (auto& [id, b] : balls) s.balls.push_back(b);
-  return s;
-}
+class ChunkSide {
+ public:
+  ChunkSide(std::span<const std::uint8_t> payload, const OpenedLog& log, const PhysicsParams<Real>& params)
+      : payload_(payload), log_(log), opened_(openChunk<Real>(payload)),
+        records_(payload, opened_, params, maxQueued(log)), events_(opened_.preamble.eventsDone),
+        time_(opened_.keyframe ? opened_.keyframe->now : Real(0)) {}
 
+  const OpenedChunk<Real>& opened() const { return opened_; }
+  std::span<const std::uint8_t> preambleAndKeyframe() const { return payload_.first(opened_.recordsAt); }
+  std::uint64_t events() const { return events_; }
+
+  // The next record, or nullopt at the chunk's end.
+  std::optional<Decision<Real>> next() {
+    if (records_.atEnd()) return std::nullopt;
+    from_ = records_.position();
+    Decision<Real> d = records_.next();
+    to_ = records_.position();
+    return d;
+  }
+  std::span<const std::uint8_t> lastBytes() const { return payload_.subspan(from_, to_ - from_); }
+
+  // Takes a decision both sides made into the state.
+  void apply(const Decision<Real>& d) {
+    time_ = d.time;
+    if (d.type != DecisionType::Executed) return;
+    ++events_;
+    for (const BallChange<Real>& ch : d.outcome.balls())
+      balls_[ch.ball] = BallView{ch.ball,
+                                 nameOf(log_.gizmoNames, ch.ball),
+                                 exact(ch.position.x),
+                                 exact(ch.position.y),
+                                 exact(ch.velocityAfter.x),
+                                 exact(ch.velocityAfter.y),
+                                 exact(ch.velocityBefore.x),
+                                 exact(ch.velocityBefore.y)};
+  }
+  StateView state() const {
+    StateView s;
+    s.time = exact(time_);
+    s.events = events_;
+    for (const auto& [id, b] : balls_) s.balls.push_back(b);
+    return s;
+  }
+
+ private:
+  std::span<const std::uint8_t> payload_;
+  const OpenedLog& log_;
+  OpenedChunk<Real> opened_;
+  ChunkRecords<Real> records_;
+  std::uint64_t events_;
+  Real time_;
+  std::size_t from_ = 0, to_ = 0;
+  std::map<GizmoId, BallView> balls_;
+};
+
+// Reads the run's chunk and the log's side by side to the first record whose bytes differ.
 template <class Real>
 void explainParting(const OpenedLog& log, ComparingSink& sink, ReplayReport& report) {
   const PhysicsParams<Real> params = paramsOf<Real>(log);
   const std::size_t i = sink.chunks - 1;
-  const DecodedChunk<Real> ours = decodeChunk<Real>(sink.ours, params);
+  ChunkSide<Real> ours(sink.ours, log, params);
+  const std::uint64_t firstIndex = ours.opened().preamble.decisionsDone;
   if (i >= log.reader.chunks().size()) {
     report.where = "the run goes on after the log's last chunk";
-    report.runDecision = viewOf(ours.decisions.front(), ours.opened.preamble.decisionsDone,
-                                ours.opened.preamble.eventsDone, log.gizmoNames);
+    if (const std::optional<Decision<Real>> d = ours.next())
+      report.runDecision = viewOf(*d, firstIndex, ours.events(), log.gizmoNames);
     return;
   }
   const std::vector<std::uint8_t> theirBytes = log.reader.chunkPayload(i);
-  const DecodedChunk<Real> theirs = decodeChunk<Real>(theirBytes, params);
-  if (!std::equal(sink.ours.begin(), sink.ours.begin() + std::ptrdiff_t(ours.opened.recordsAt), theirBytes.begin(),
-                  theirBytes.begin() + std::ptrdiff_t(theirs.opened.recordsAt))) {
+  ChunkSide<Real> theirs(theirBytes, log, params);
+  const auto a = ours.preambleAndKeyframe(), b = theirs.preambleAndKeyframe();
+  if (!std::equal(a.begin(), a.end(), b.begin(), b.end())) {
     report.where = "chunk " + std::to_string(i) + " starts from a different state (keyframe)";
     return;
   }
-  auto recordBytes = [](const std::vector<std::uint8_t>& all, const std::pair<std::size_t, std::size_t>& s) {
-    return std::span<const std::uint8_t>(all.data() + s.first, s.second - s.first);
-  };
-  std::size_t k = 0;
-  std::uint64_t events = ours.opened.preamble.eventsDone;
-  const std::size_t n = std::min(ours.decisions.size(), theirs.decisions.size());
-  while (k < n) {
-    const auto a = recordBytes(sink.ours, ours.spans[k]), b = recordBytes(theirBytes, theirs.spans[k]);
-    if (!std::equal(a.begin(), a.end(), b.begin(), b.end())) break;
-    if (ours.decisions[k].type == DecisionType::Executed) ++events;
-    ++k;
+  std::uint64_t index = firstIndex;
+  for (;; ++index) {
+    const std::optional<Decision<Real>> x = theirs.next(), y = ours.next();
+    const bool same = x && y && std::ranges::equal(theirs.lastBytes(), ours.lastBytes());
+    if (!same) {
+      if (x) report.logDecision = viewOf(*x, index, theirs.events(), log.gizmoNames);
+      if (y) report.runDecision = viewOf(*y, index, ours.events(), log.gizmoNames);
+      report.where = x && y ? "decision " + std::to_string(index) + " differs"
+                     : x    ? "the run ends before the log"
+                     : y    ? "the log ends before the run"
+                            : "chunk " + std::to_string(i) + " differs after its last record";
+      break;
+    }
+    theirs.apply(*x);
+    ours.apply(*y);
   }
-  const std::uint64_t index = ours.opened.preamble.decisionsDone + k;
-  if (k < theirs.decisions.size()) report.logDecision = viewOf(theirs.decisions[k], index, events, log.gizmoNames);
-  if (k < ours.decisions.size()) report.runDecision = viewOf(ours.decisions[k], index, events, log.gizmoNames);
-  report.where = k < n ? "decision " + std::to_string(index) + " differs"
-                       : (k < theirs.decisions.size() ? "the run ends before the log" : "the log ends before the run");
-  report.logState = stateFromRecords(theirs, k, log.gizmoNames);
-  report.runState = stateFromRecords(ours, k, log.gizmoNames);
+  report.logState = theirs.state();
+  report.runState = ours.state();
   report.decisions = index;
-  report.events = events;
+  report.events = ours.events();
 }
 
 template <class Real>
@@ -388,7 +413,7 @@ OpenedLog openLog(const std::string& path) {
   try {
     return openLog(ByteSource::file(path));
   } catch (const FormatError& e) {
-    throw FormatError(path + ": " + e.what(), e.offset());
+    throw FormatError(path + ": " + e.description(), e.offset());
   }
 }
 

@@ -468,6 +468,79 @@ TEST(ReplayLog, DamagedRecordsNeverCrashTheDecoder) {
 
 // --- truncation ----------------------------------------------------------------------------------------
 
+// --- logs with valid checksums whose records are not what any run could write ------------------------
+
+// A log made by hand: the header frame of `model` (a real log) and one chunk of `records` after a
+// first-chunk preamble, with a correct index and trailer.
+Bytes handMadeLog(const Bytes& model, const Bytes& records) {
+  Bytes out(model.begin(), model.begin() + std::ptrdiff_t(headerFrameEnd(model)));
+  auto frame = [&](FrameType type, const Bytes& payload) {
+    const std::uint64_t at = out.size();
+    out.push_back(static_cast<std::uint8_t>(type));
+    out.resize(out.size() + 4);
+    putU32(out, out.size() - 4, static_cast<std::uint32_t>(payload.size()));
+    out.insert(out.end(), payload.begin(), payload.end());
+    out.resize(out.size() + 8);
+    putU64(out, out.size() - 8, checksum64(payload, (std::uint64_t(type) << 32) | payload.size()));
+    return at;
+  };
+  std::vector<std::uint8_t> chunk;
+  writePreamble(chunk, ChunkPreamble{});
+  chunk.insert(chunk.end(), records.begin(), records.end());
+  const std::uint64_t chunkAt = frame(FrameType::Chunk, chunk);
+  ByteWriter index;
+  index.varint(1);
+  index.varint(chunkAt);
+  index.varint(0);
+  index.varint(0);
+  index.u64(0);
+  index.u8(1);
+  index.varint(0);
+  index.u64(0);
+  index.varint(0);
+  const auto ib = index.bytes();
+  const std::uint64_t indexAt = frame(FrameType::Index, Bytes(ib.begin(), ib.end()));
+  out.resize(out.size() + 8);
+  putU64(out, out.size() - 8, indexAt);
+  out.insert(out.end(), kTrailerMagic.begin(), kTrailerMagic.end());
+  return out;
+}
+
+// Walks every decision; returns the FormatError's message, or "" when the log reads.
+std::string walkError(const Bytes& log) {
+  try {
+    const OpenedLog opened = openBytes(log);
+    DecisionStream stream(opened);
+    while (stream.next()) {
+    }
+  } catch (const FormatError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ReplayLog, ALogCannotMakeTheReaderHoldMoreEventsThanTheBoardCan) {
+  // The crafted log of a 100000-bit MPFR run would hold a huge value for every event it schedules.
+  const RunRequest request = requestFor("boards/spec-example.txt", MotionModel::Ballistic, 0.01);
+  const Recorded mpfr = record(request, PrecisionChoice{Precision::Mpfr, 100000}, "mpfr-header");
+  const Bytes endOfTickNow(100000, 0x07);  // "an end of tick is scheduled now", over and over
+  EXPECT_PRED2(contains, walkError(handMadeLog(mpfr.bytes, endOfTickNow)), "more queued events than the board can hold");
+}
+
+TEST(ReplayLog, EveryRecordHasOneSpelling) {
+  const Recorded& rec = specExample(5.0);
+  // A recalculate event has only its ball: written in full, it is refused.
+  EXPECT_PRED2(contains, walkError(handMadeLog(rec.bytes, Bytes{0x46, 0x02, 0x01, 0x01})), "short form holds");
+  EXPECT_PRED2(contains, walkError(handMadeLog(rec.bytes, Bytes{0xA5, 0x02, 0x04})), "bad trigger record");
+  EXPECT_PRED2(contains, walkError(handMadeLog(rec.bytes, Bytes{0xB7, 0x02})), "bad action record");
+  // A removal whose long distance overflows.
+  Bytes overflow{0x8F, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x01};
+  overflow.insert(overflow.begin(), 15, 0x07);  // fifteen events scheduled first
+  EXPECT_PRED2(contains, walkError(handMadeLog(rec.bytes, overflow)), "distance out of range");
+  // The short forms themselves read.
+  EXPECT_EQ(walkError(handMadeLog(rec.bytes, Bytes{0x06, 0x02, 0x07, 0x81, 0x80})), "");
+}
+
 TEST(ReplayLog, CutOffLogsKeepTheirCompleteChunks) {
   const Recorded& rec = specExample(30.0);
   const Bytes& full = rec.bytes;

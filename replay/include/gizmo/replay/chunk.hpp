@@ -53,8 +53,9 @@ OpenedChunk<Real> openChunk(std::span<const std::uint8_t> payload) {
 template <class Real>
 class ChunkRecords {
  public:
-  ChunkRecords(std::span<const std::uint8_t> payload, const OpenedChunk<Real>& c, const PhysicsParams<Real>& params)
-      : reader_(payload), decoder_(reader_, params) {
+  ChunkRecords(std::span<const std::uint8_t> payload, const OpenedChunk<Real>& c, const PhysicsParams<Real>& params,
+               std::size_t maxQueued)
+      : reader_(payload), decoder_(reader_, params, maxQueued) {
     reader_.span(c.recordsAt);
     if (c.keyframe) decoder_.reset(c.keyframe->now, c.keyframe->events, c.keyframe->nextSequence);
     else decoder_.reset(Real(0), {}, 0);

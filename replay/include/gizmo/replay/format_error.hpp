@@ -12,8 +12,11 @@ class FormatError : public std::runtime_error {
  public:
   FormatError(const std::string& description, std::uint64_t offset);
   std::uint64_t offset() const noexcept { return offset_; }
+  // The description alone, for a caller that adds context and throws again.
+  const std::string& description() const noexcept { return description_; }
 
  private:
+  std::string description_;
   std::uint64_t offset_;
 };
 

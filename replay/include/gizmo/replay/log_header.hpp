@@ -56,7 +56,9 @@ PhysicsParams<Real> readParams(std::span<const std::uint8_t> bytes) {
   if (model > 1) throw FormatError("header: unknown motion model", 0);
   p.model = static_cast<MotionModel>(model);
   for (Real* x : {&p.gravity, &p.mu, &p.mu2, &p.maxTick, &p.frictionStep, &p.restSpeed}) *x = readScalar<Real>(r, zero);
-  p.pinchLimit = static_cast<std::int32_t>(r.svarint());
+  const std::int64_t pinch = r.svarint();
+  if (pinch < 0 || pinch > INT32_MAX) throw FormatError("header: pinch limit out of range", r.position());
+  p.pinchLimit = static_cast<std::int32_t>(pinch);
   if (!r.atEnd()) throw FormatError("header: bytes after the parameters", r.position());
   return p;
 }

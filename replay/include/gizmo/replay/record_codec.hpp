@@ -6,6 +6,7 @@
 // Both keep the same small context, reset at every chunk's keyframe: the current time (times
 // are written against it), the next sequence number (events are named by their distance from
 // it) and the last position and velocity written (outcomes are written against them).
+#include <limits>
 #include <unordered_map>
 
 #include "gizmo/core/board/board_state.hpp"
@@ -98,6 +99,7 @@ class RecordEncoder {
 
   void scheduled(const Event<Real>& e) {
     flushHeld();
+    ++records_;
     if (e.sequence != c_.nextSequence) throw std::logic_error("replay: events scheduled out of sequence");
     ++c_.nextSequence;
     const EventFields f = scheduledFields(e.kind);
@@ -117,6 +119,7 @@ class RecordEncoder {
 
   void removed(const Event<Real>& e) {
     flushHeld();
+    ++records_;
     const std::uint64_t d = distance(e);
     Out o(out_, 1 + kVarint);
     if (d < 15) {
@@ -129,6 +132,7 @@ class RecordEncoder {
 
   void executed(const Event<Real>& e, const EventOutcome<Real>& outcome) {
     setNow(e.time);
+    ++records_;
     const std::span<const BallChange<Real>> changes = outcome.balls();
     bool forA = false, forB = false;
     std::size_t i = 0;
@@ -159,22 +163,26 @@ class RecordEncoder {
   // record, which sets the current time they share; only a report that is not followed by its
   // event needs a time record of its own.
   void trigger(const Real& t, GizmoId source, GizmoId target) {
+    ++records_;
     Out o(hold(t), 1 + 2 * kVarint);
     o.u8(static_cast<std::uint8_t>(RecordType::Trigger));
     o.svarint(source);
     o.svarint(target);
   }
   void action(const Real& t, GizmoId target) {
+    ++records_;
     Out o(hold(t), 1 + kVarint);
     o.u8(static_cast<std::uint8_t>(RecordType::Action));
     o.svarint(target);
   }
   void input(const Real& t, int key, KeyDirection d) {
+    ++records_;
     Out o(hold(t), 1 + kVarint);
     o.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Input) | (d == KeyDirection::Up)));
     o.svarint(key);
   }
   void rule(const Real& t, ModelRule r, GizmoId g, GizmoId other) {
+    ++records_;
     Out o(hold(t), 1 + 2 * kVarint);
     o.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Rule) | static_cast<std::uint8_t>(r)));
     o.svarint(g);
@@ -183,10 +191,13 @@ class RecordEncoder {
   void tick(const Real& t) {
     flushHeld();
     at(t);
+    ++records_;
     out_.u8(static_cast<std::uint8_t>(RecordType::Tick));
   }
   // Writes whatever is held (before a chunk is closed).
   void flush() { flushHeld(); }
+  // Records made so far (held ones included), over all chunks: what the reader numbers.
+  std::uint64_t records() const { return records_; }
 
  private:
   std::uint64_t distance(const Event<Real>& e) const {
@@ -195,7 +206,7 @@ class RecordEncoder {
   }
 
   ByteWriter& hold(const Real& t) {
-    if (held_.size() > 0 && !(t == heldTime_)) flushHeld();
+    if (held_.size() > 0 && !sameEncoding(t, heldTime_)) flushHeld();
     heldTime_ = t;
     return held_;
   }
@@ -206,15 +217,17 @@ class RecordEncoder {
     held_.clear();
   }
 
+  // The reader takes the executed event's time as the current time, bit for bit.
   void setNow(const Real& t) {
-    if (t == c_.now) return;
+    if (sameEncoding(t, c_.now)) return;
     c_.now = t;
     nowPlusTick_ = c_.now + c_.maxTick;
   }
   // Reports carry the time of the event they belong to; anything else is written as a move of
   // the current time first, so that nothing is lost.
   void at(const Real& t) {
-    if (t == c_.now) return;
+    if (sameEncoding(t, c_.now)) return;
+    ++records_;
     {
       Out o(out_, 1 + kScalar);
       o.u8(static_cast<std::uint8_t>(RecordType::Time));
@@ -224,8 +237,8 @@ class RecordEncoder {
   }
 
   TimeForm timeForm(const Event<Real>& e, std::int64_t& k) {
-    if (e.time == c_.now) return TimeForm::Now;
-    if (e.time == nowPlusTick_) return TimeForm::NowPlusTick;
+    if (sameEncoding(e.time, c_.now)) return TimeForm::Now;
+    if (sameEncoding(e.time, nowPlusTick_)) return TimeForm::NowPlusTick;
     if (e.kind == EventKind::FrictionTick && onGrid(e.time, c_.frictionStep, lastFrictionK_, k)) return TimeForm::FrictionGrid;
     if (e.kind == EventKind::EndOfTick && onGrid(e.time, c_.maxTick, lastTickK_, k)) return TimeForm::TickGrid;
     return TimeForm::Explicit;
@@ -233,7 +246,7 @@ class RecordEncoder {
   // Whether t = k·step for a whole k; the k after the last one found is tried first, which
   // spares a division nearly always.
   static bool onGrid(const Real& t, const Real& step, std::int64_t& last, std::int64_t& k) {
-    if (Real(Real(last + 1) * step) == t) {
+    if (sameEncoding(Real(Real(last + 1) * step), t)) {
       k = ++last;
       return true;
     }
@@ -241,7 +254,7 @@ class RecordEncoder {
     const double q = toDouble(Real(t / step));
     if (!(q < 9.0e15)) return false;
     k = static_cast<std::int64_t>(q + 0.5);
-    if (!(Real(Real(k) * step) == t)) return false;
+    if (!sameEncoding(Real(Real(k) * step), t)) return false;
     last = k;
     return true;
   }
@@ -252,6 +265,7 @@ class RecordEncoder {
   std::int64_t lastFrictionK_ = 0, lastTickK_ = 0;
   ByteWriter held_;
   Real heldTime_{0};
+  std::uint64_t records_ = 0;
 };
 
 // One decoded record.
@@ -288,12 +302,16 @@ struct Decision {
 template <class Real>
 class RecordDecoder {
  public:
-  RecordDecoder(ByteReader& in, const PhysicsParams<Real>& params) : in_(in) {
+  // maxQueued: the most events the board's queue can hold at once; a log that claims more is
+  // refused before it can make the reader hold them all.
+  RecordDecoder(ByteReader& in, const PhysicsParams<Real>& params, std::size_t maxQueued)
+      : in_(in), maxQueued_(maxQueued) {
     c_.maxTick = params.maxTick;
     c_.frictionStep = params.frictionStep;
   }
   // The keyframe's time, its queue and its next sequence number.
   void reset(const Real& now, const std::vector<Event<Real>>& live, std::uint64_t nextSequence) {
+    if (live.size() > maxQueued_) throw FormatError("a keyframe with more queued events than the board can hold", 0);
     c_.reset(now, nextSequence);
     live_.clear();
     for (const Event<Real>& e : live) live_.emplace(e.sequence, e);
@@ -315,6 +333,10 @@ class RecordDecoder {
       if (all || f.a) e.a = gizmoId();
       if (all || f.b) e.b = gizmoId();
       if (all || f.feature) e.feature = static_cast<std::int32_t>(bounded(INT32_MIN, INT32_MAX));
+      // Every event has one spelling: the full form only for an event its kind's short form
+      // cannot hold.
+      if (all && (f.a || e.a == kNoGizmo) && (f.b || e.b == kNoGizmo) && (f.feature || e.feature == -1))
+        throw FormatError("an event written in full that its short form holds", start);
       switch (static_cast<TimeForm>(form)) {
         case TimeForm::Now: e.time = c_.now; break;
         case TimeForm::NowPlusTick: e.time = c_.now + c_.maxTick; break;
@@ -323,6 +345,7 @@ class RecordDecoder {
         case TimeForm::Explicit: e.time = readScalar<Real>(in_, c_.now); break;
         default: throw FormatError("unknown time form " + std::to_string(form), start);
       }
+      if (live_.size() >= maxQueued_) throw FormatError("more queued events than the board can hold", start);
       e.sequence = c_.nextSequence++;
       live_.emplace(e.sequence, e);
       d.time = c_.now;
@@ -333,24 +356,26 @@ class RecordDecoder {
       case RecordType::Removed: {
         const std::uint64_t small = tag & 15;
         d.type = DecisionType::Removed;
-        d.event = take(small < 15 ? small : 15 + in_.varint(), start);
+        d.event = take(small < 15 ? small : longDistance(15), start);
         return d;
       }
       case RecordType::Executed: {
         const std::uint64_t small = tag & 3;
         d.type = DecisionType::Executed;
-        d.event = take(small < 3 ? small : 3 + in_.varint(), start);
+        d.event = take(small < 3 ? small : longDistance(3), start);
         c_.now = d.time = d.event.time;
         if (tag & 8) readChange(d.outcome, d.event.a);
         if (tag & 4) readChange(d.outcome, d.event.b);
         return d;
       }
       case RecordType::Trigger:
+        if (tag & 15) throw FormatError("bad trigger record", start);
         d.type = DecisionType::Trigger;
         d.gizmo = gizmoId();
         d.other = gizmoId();
         return d;
       case RecordType::Action:
+        if (tag & 15) throw FormatError("bad action record", start);
         d.type = DecisionType::Action;
         d.gizmo = gizmoId();
         return d;
@@ -390,6 +415,12 @@ class RecordDecoder {
     return v;
   }
   GizmoId gizmoId() { return static_cast<GizmoId>(bounded(-1, INT32_MAX)); }
+  std::uint64_t longDistance(std::uint64_t from) {
+    const std::size_t at = in_.position();
+    const std::uint64_t v = in_.varint();
+    if (v > std::numeric_limits<std::uint64_t>::max() - from) throw FormatError("event distance out of range", at);
+    return from + v;
+  }
   std::int64_t grid() {
     const std::size_t at = in_.position();
     const std::uint64_t k = in_.varint();
@@ -422,6 +453,7 @@ class RecordDecoder {
   }
 
   ByteReader& in_;
+  std::size_t maxQueued_;
   RecordContext<Real> c_;
   std::unordered_map<std::uint64_t, Event<Real>> live_;
 };

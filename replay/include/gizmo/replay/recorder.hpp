@@ -18,42 +18,34 @@ class Recorder final : public BoardObserver<Real> {
 
   void eventScheduled(const Event<Real>& e) override {
     if (pending_) beginPending();
-    ++decisions_;
     encoder_.scheduled(e);
   }
   void eventRemoved(const Event<Real>& e) override {
     if (pending_) beginPending();
-    ++decisions_;
     encoder_.removed(e);
   }
   void eventExecuted(const Event<Real>& e, const EventOutcome<Real>& o) override {
     if (pending_) beginPending();
-    ++decisions_;
     encoder_.executed(e, o);
   }
   void triggerFired(const Real& t, GizmoId s, GizmoId g) override {
     if (pending_) beginPending();
-    ++decisions_;
     encoder_.trigger(t, s, g);
   }
   void actionPerformed(const Real& t, GizmoId g) override {
     if (pending_) beginPending();
-    ++decisions_;
     encoder_.action(t, g);
   }
   void inputApplied(const Real& t, int key, KeyDirection d) override {
     if (pending_) beginPending();
-    ++decisions_;
     encoder_.input(t, key, d);
   }
   void modelRuleApplied(const Real& t, ModelRule r, GizmoId g, GizmoId o) override {
     if (pending_) beginPending();
-    ++decisions_;
     encoder_.rule(t, r, g, o);
   }
   void tickBoundary(const Real& t) override {
     if (pending_) beginPending();
-    ++decisions_;
     encoder_.tick(t);
     ++ticks_;
     if (chunk_.size() >= limit_) {
@@ -81,7 +73,7 @@ class Recorder final : public BoardObserver<Real> {
     ChunkPreamble p;
     p.ticksDone = ticks_;
     p.eventsDone = state ? state->executedTotal : 0;
-    p.decisionsDone = decisions_;
+    p.decisionsDone = encoder_.records();
     p.time = state ? toDouble(state->now) : 0.0;
     p.hasKeyframe = state.has_value();
     preamble_.clear();
@@ -115,7 +107,6 @@ class Recorder final : public BoardObserver<Real> {
   ChunkEntry entry_;
   std::size_t limit_ = kChunkTargetBytes;
   std::uint64_t ticks_ = 0;
-  std::uint64_t decisions_ = 0;
   bool pending_ = false;
   std::optional<BoardState<Real>> pendingState_;
 };

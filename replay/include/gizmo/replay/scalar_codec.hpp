@@ -245,6 +245,21 @@ template <class Real>
   else return detail::putXorBytes(p, Codec::toBytes(value), Codec::toBytes(base));
 }
 
+// Whether two values have the same encoding: equal and with the same sign of zero (and both
+// NaN, whatever their payload, for MPFR, which has one NaN). The encoder uses it wherever an
+// equality lets it leave a value out, so that what the reader rebuilds is the same bits.
+template <class Real>
+inline bool sameEncoding(const Real& a, const Real& b) {
+  using Codec = ScalarCodec<Real>;
+  if constexpr (detail::WordCodec<Real>) return Codec::toBits(a) == Codec::toBits(b);
+  else if constexpr (detail::FixedWidthCodec<Real>) return Codec::toBytes(a) == Codec::toBytes(b);
+  else {
+    const mpfr_srcptr x = a.backend().data(), y = b.backend().data();
+    if (mpfr_nan_p(x) || mpfr_nan_p(y)) return mpfr_nan_p(x) && mpfr_nan_p(y);
+    return mpfr_equal_p(x, y) && mpfr_signbit(x) == mpfr_signbit(y);
+  }
+}
+
 // Writes `value` in the compact form relative to `base` (ignored for MpfrReal).
 template <class Real>
 inline void writeScalar(ByteWriter& out, const Real& value, const Real& base) {
