@@ -7,6 +7,7 @@
 // are written against it), the next sequence number (events are named by their distance from
 // it) and the last position and velocity written (outcomes are written against them).
 #include <limits>
+#include <optional>
 #include <unordered_map>
 
 #include "gizmo/core/board/board_state.hpp"
@@ -94,6 +95,7 @@ class RecordEncoder {
   void reset(const Real& now, std::uint64_t nextSequence) {
     c_.reset(now, nextSequence);
     held_.clear();
+    impliedFriction_.reset();
     nowPlusTick_ = c_.now + c_.maxTick;
   }
 
@@ -131,6 +133,11 @@ class RecordEncoder {
   }
 
   void executed(const Event<Real>& e, const EventOutcome<Real>& outcome) {
+    if (e.kind == EventKind::FrictionTick) {
+      if (!impliedFriction_ || impliedFriction_->ball != e.a || !sameEncoding(impliedFriction_->time, e.time))
+        throw std::logic_error("replay: a friction tick without its friction rule");
+      impliedFriction_.reset();
+    }
     setNow(e.time);
     ++records_;
     const std::span<const BallChange<Real>> changes = outcome.balls();
@@ -181,12 +188,16 @@ class RecordEncoder {
     o.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Input) | (d == KeyDirection::Up)));
     o.svarint(key);
   }
+  // The board applies the friction rule at every friction tick, and only there: the reader puts
+  // that rule back after the tick's record, so it is not written (a friction tick without it is
+  // a broken promise of the board's, and stops the recording).
   void rule(const Real& t, ModelRule r, GizmoId g, GizmoId other) {
     ++records_;
-    Out o(hold(t), 1 + 2 * kVarint);
-    o.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Rule) | static_cast<std::uint8_t>(r)));
-    o.svarint(g);
-    o.svarint(other);
+    if (r == ModelRule::FrictionApplied && other == kNoGizmo && held_.size() == 0 && !impliedFriction_) {
+      impliedFriction_ = ImpliedFriction{g, t};
+      return;
+    }
+    writeRule(hold(t), r, g, other);
   }
   void tick(const Real& t) {
     flushHeld();
@@ -205,12 +216,28 @@ class RecordEncoder {
     return c_.nextSequence - 1 - e.sequence;
   }
 
+  static void writeRule(ByteWriter& w, ModelRule r, GizmoId g, GizmoId other) {
+    Out o(w, 1 + 2 * kVarint);
+    o.u8(static_cast<std::uint8_t>(static_cast<std::uint8_t>(RecordType::Rule) | static_cast<std::uint8_t>(r)));
+    o.svarint(g);
+    o.svarint(other);
+  }
+  // A friction rule that turns out not to belong to a friction tick is written like any rule.
+  void writeImpliedFriction() {
+    const ImpliedFriction f = *impliedFriction_;
+    impliedFriction_.reset();
+    heldTime_ = f.time;
+    writeRule(held_, ModelRule::FrictionApplied, f.ball, kNoGizmo);
+  }
+
   ByteWriter& hold(const Real& t) {
+    if (impliedFriction_) writeImpliedFriction();
     if (held_.size() > 0 && !sameEncoding(t, heldTime_)) flushHeld();
     heldTime_ = t;
     return held_;
   }
   void flushHeld() {
+    if (impliedFriction_) writeImpliedFriction();
     if (held_.size() == 0) return;
     at(heldTime_);
     out_.bytes(held_.bytes().data(), held_.size());
@@ -265,6 +292,11 @@ class RecordEncoder {
   std::int64_t lastFrictionK_ = 0, lastTickK_ = 0;
   ByteWriter held_;
   Real heldTime_{0};
+  struct ImpliedFriction {
+    GizmoId ball;
+    Real time;
+  };
+  std::optional<ImpliedFriction> impliedFriction_;
   std::uint64_t records_ = 0;
 };
 
@@ -314,12 +346,18 @@ class RecordDecoder {
     if (live.size() > maxQueued_) throw FormatError("a keyframe with more queued events than the board can hold", 0);
     c_.reset(now, nextSequence);
     live_.clear();
+    impliedRule_.reset();
     for (const Event<Real>& e : live) live_.emplace(e.sequence, e);
   }
 
-  bool atEnd() const { return in_.atEnd(); }
+  bool atEnd() const { return !impliedRule_ && in_.atEnd(); }
 
   Decision<Real> next() {
+    if (impliedRule_) {
+      Decision<Real> d = std::move(*impliedRule_);
+      impliedRule_.reset();
+      return d;
+    }
     Decision<Real> d;
     const std::size_t start = in_.position();
     const std::uint8_t tag = in_.u8();
@@ -366,6 +404,13 @@ class RecordDecoder {
         c_.now = d.time = d.event.time;
         if (tag & 8) readChange(d.outcome, d.event.a);
         if (tag & 4) readChange(d.outcome, d.event.b);
+        if (d.event.kind == EventKind::FrictionTick) {  // its friction rule, implied (see the encoder)
+          Decision<Real>& r = impliedRule_.emplace();
+          r.type = DecisionType::Rule;
+          r.time = c_.now;
+          r.rule = ModelRule::FrictionApplied;
+          r.gizmo = d.event.a;
+        }
         return d;
       }
       case RecordType::Trigger:
@@ -456,6 +501,7 @@ class RecordDecoder {
   std::size_t maxQueued_;
   RecordContext<Real> c_;
   std::unordered_map<std::uint64_t, Event<Real>> live_;
+  std::optional<Decision<Real>> impliedRule_;
 };
 
 }  // namespace gizmo::replay
