@@ -40,7 +40,8 @@ int diffCommand(const DiffOptions& o) {
       j["counts"] = counts;
     }
     std::cout << j.dump(2) << '\n';
-    return exit;
+    std::cout.flush();
+    return finishWithCutOffLogs("diff", exit, {&*a, &*b}, {o.first, o.second});
   }
   for (const std::string& n : r.notes) std::printf("note: %s\n", n.c_str());
   if (!r.parted) {
@@ -63,7 +64,8 @@ int diffCommand(const DiffOptions& o) {
       std::printf("%-28s %12llu %12llu\n", kind.c_str(), static_cast<unsigned long long>(n.first),
                   static_cast<unsigned long long>(n.second));
   }
-  return exit;
+  std::fflush(stdout);
+  return finishWithCutOffLogs("diff", exit, {&*a, &*b}, {o.first, o.second});
 }
 
 }  // namespace gizmo::cli

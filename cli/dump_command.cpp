@@ -44,7 +44,8 @@ int dumpCommand(const DumpOptions& o) {
     std::cerr << "gizmo dump: " << o.log << ": " << e.what() << '\n';
     return kExitBadInput;
   }
-  return kExitOk;
+  std::fflush(stdout);
+  return finishWithCutOffLogs("dump", kExitOk, {&*log}, {o.log});
 }
 
 }  // namespace gizmo::cli

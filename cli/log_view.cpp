@@ -173,13 +173,26 @@ bool isKindName(std::string_view kind) {
 std::optional<replay::OpenedLog> openLogFor(const std::string& command, const std::string& path, int& exitCode) {
   try {
     std::optional<replay::OpenedLog> log(replay::openLog(path));
-    if (!log->reader.truncation().empty()) std::cerr << "gizmo " << command << ": warning: " << path << ": " << log->reader.truncation() << '\n';
     return log;
   } catch (const std::exception& e) {
     std::cerr << "gizmo " << command << ": " << e.what() << '\n';
     exitCode = kExitBadInput;
     return std::nullopt;
   }
+}
+
+int finishWithCutOffLogs(const std::string& command, int code, std::initializer_list<const replay::OpenedLog*> logs,
+                         std::initializer_list<std::string> paths) {
+  bool cut = false;
+  auto path = paths.begin();
+  for (const replay::OpenedLog* log : logs) {
+    if (!log->reader.truncation().empty()) {
+      std::cerr << "gizmo " << command << ": " << *path << ": " << log->reader.truncation() << '\n';
+      cut = true;
+    }
+    ++path;
+  }
+  return cut && code == kExitOk ? kExitBadInput : code;
 }
 
 }  // namespace gizmo::cli

@@ -1,6 +1,7 @@
 #pragma once
 // How the log commands (replay, dump, diff) print a decision and a state: one readable line, or
 // one JSON object. Exact values appear as hex floats next to their decimal rounding.
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -23,5 +24,10 @@ bool isKindName(std::string_view kind);
 
 // Opens a log for a command; on failure prints why and returns nullopt with exitCode set.
 std::optional<replay::OpenedLog> openLogFor(const std::string& command, const std::string& path, int& exitCode);
+
+// A cut-off log is read as far as it goes, and the command's work is done on that part; then it
+// says where the log stops and exits 2 (bad input), unless it already failed a check.
+int finishWithCutOffLogs(const std::string& command, int code, std::initializer_list<const replay::OpenedLog*> logs,
+                         std::initializer_list<std::string> paths);
 
 }  // namespace gizmo::cli

@@ -75,7 +75,9 @@ int replayCommand(const ReplayOptions& o) {
   const std::optional<replay::OpenedLog> log = openLogFor("replay", o.log, code);
   if (!log) return code;
   try {
-    return o.at || o.event ? seek(*log, o) : compare(*log, o);
+    const int result = o.at || o.event ? seek(*log, o) : compare(*log, o);
+    std::fflush(stdout);
+    return finishWithCutOffLogs("replay", result, {&*log}, {o.log});
   } catch (const std::exception& e) {
     std::cerr << "gizmo replay: " << o.log << ": " << e.what() << '\n';
     return kExitBadInput;
