@@ -91,3 +91,17 @@ function(gizmo_without_wall_seconds out json)
   string(REGEX REPLACE "\n *\"wall_seconds\": [^\n]*" "" stripped "${json}")
   set(${out} "${stripped}" PARENT_SCOPE)
 endfunction()
+
+# Checks the results of gizmo_run(RUN ...): the exit code, and that stdout and stderr match the
+# regexes in the caller's variables ${prefix}STDOUT and ${prefix}STDERR, where they are defined.
+function(gizmo_check_run code prefix)
+  if(NOT RUN_EXIT STREQUAL "${code}")
+    gizmo_fail("the exit code should be ${code}")
+  endif()
+  foreach(stream STDOUT STDERR)
+    if(DEFINED ${prefix}${stream} AND NOT RUN_${stream} MATCHES "${${prefix}${stream}}")
+      string(TOLOWER ${stream} name)
+      gizmo_fail("${name} should match: ${${prefix}${stream}}")
+    endif()
+  endforeach()
+endfunction()

@@ -1,6 +1,6 @@
 #pragma once
 // A typed-test fixture over the scalar ladder that runs MPFR cases at 128 bits and restores the
-// thread's MPFR precision afterwards.
+// thread's MPFR precision afterwards, and a scope that does the same for a block of code.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -21,6 +21,18 @@ class MpfrAware : public ::testing::Test {
 
  private:
   unsigned saved_ = 0;
+};
+
+// Computes with MPFR at `bits` for as long as it lives, then restores the thread's precision.
+class ScopedMpfrBits {
+ public:
+  explicit ScopedMpfrBits(long bits) : saved_(MpfrReal::default_precision()) { setMpfrBits(bits); }
+  ~ScopedMpfrBits() { MpfrReal::default_precision(saved_); }
+  ScopedMpfrBits(const ScopedMpfrBits&) = delete;
+  ScopedMpfrBits& operator=(const ScopedMpfrBits&) = delete;
+
+ private:
+  unsigned saved_;
 };
 
 using Scalars = ::testing::Types<float, double, long double, Float128, MpfrReal>;

@@ -27,18 +27,7 @@ namespace gm = gizmo::math;
 // ---------------------------------------------------------------------------------------------
 // Helpers
 
-class ScopedMpfrBits {
- public:
-  explicit ScopedMpfrBits(long bits) : saved_(MpfrReal::default_precision()) {
-    gizmo::setMpfrBits(bits);
-  }
-  ~ScopedMpfrBits() { MpfrReal::default_precision(saved_); }
-  ScopedMpfrBits(const ScopedMpfrBits&) = delete;
-  ScopedMpfrBits& operator=(const ScopedMpfrBits&) = delete;
-
- private:
-  unsigned saved_;
-};
+using gizmo::test::ScopedMpfrBits;
 
 template <class Real>
 Real fd(double d) {

@@ -20,6 +20,7 @@
 
 #include "gizmo/replay/bytes.hpp"
 #include "gizmo/replay/format_error.hpp"
+#include "support/scalar_fixture.hpp"
 
 namespace {
 
@@ -292,18 +293,7 @@ TEST(ReplayScalarCodec, DoubleExactTextMatchesPrintf) {
 // ---------------------------------------------------------------------------------------------
 // MPFR
 
-class ScopedMpfrBits {
- public:
-  explicit ScopedMpfrBits(long bits) : saved_(MpfrReal::default_precision()) {
-    gizmo::setMpfrBits(bits);
-  }
-  ~ScopedMpfrBits() { MpfrReal::default_precision(saved_); }
-  ScopedMpfrBits(const ScopedMpfrBits&) = delete;
-  ScopedMpfrBits& operator=(const ScopedMpfrBits&) = delete;
-
- private:
-  unsigned saved_;
-};
+using gizmo::test::ScopedMpfrBits;
 
 // A value using every bit of the current precision (top and bottom bits set), times 2^exponent.
 MpfrReal randomMpfr(std::mt19937_64& rng, long exponentRange) {
