@@ -1,4 +1,5 @@
 // `gizmo dump`: a log's decisions, one line (or one JSON object) each, optionally filtered.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -15,6 +16,11 @@ int dumpCommand(const DumpOptions& o) {
                  "executed, trigger, rule, tick, or a model rule such as friction)\n";
     return kExitBadInput;
   }
+  for (const std::optional<double>& t : {o.from, o.to})
+    if (t && !std::isfinite(*t)) {
+      std::cerr << "gizmo dump: --from and --to must be numbers of seconds\n";
+      return kExitBadInput;
+    }
   int code = kExitOk;
   const std::optional<replay::OpenedLog> log = openLogFor("dump", o.log, code);
   if (!log) return code;

@@ -17,7 +17,7 @@ int recordCommand(const RecordOptions& options);
 struct ReplayOptions {
   std::string log;
   std::optional<double> at;
-  std::optional<unsigned long long> event;
+  std::optional<long long> event;
   bool json = false;
 };
 int replayCommand(const ReplayOptions& options);

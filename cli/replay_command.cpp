@@ -11,13 +11,13 @@ namespace {
 
 int seek(const replay::OpenedLog& log, const ReplayOptions& o) {
   replay::SeekTarget target;
-  if (o.event) target.events = *o.event;
+  if (o.event) target.events = static_cast<std::uint64_t>(*o.event);
   if (o.at) {
     if (!(*o.at >= 0) || !(*o.at <= log.header.duration)) {
       std::cerr << "gizmo replay: --at must be a time within the run (0 to " << log.header.duration << " s)\n";
       return kExitBadInput;
     }
-    target.time = *o.at;
+    target.time = *o.at + 0.0;  // −0 is 0
   }
   replay::StateView s;
   try {
@@ -27,7 +27,7 @@ int seek(const replay::OpenedLog& log, const ReplayOptions& o) {
     return kExitBadInput;
   }
   if (o.json) std::cout << stateJson(s).dump(2) << '\n';
-  else printState(o.event ? "after event " + std::to_string(*o.event) : "at time " + std::to_string(*o.at), s);
+  else printState(o.event ? "after event " + std::to_string(*o.event) : "at the requested time", s);
   return kExitOk;
 }
 
@@ -69,6 +69,10 @@ int compare(const replay::OpenedLog& log, const ReplayOptions& o) {
 int replayCommand(const ReplayOptions& o) {
   if (o.at && o.event) {
     std::cerr << "gizmo replay: give --at or --event, not both\n";
+    return kExitBadInput;
+  }
+  if (o.event && *o.event < 0) {
+    std::cerr << "gizmo replay: --event must be a number of events, 0 or more\n";
     return kExitBadInput;
   }
   int code = kExitOk;
