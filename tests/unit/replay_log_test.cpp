@@ -863,6 +863,9 @@ void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.file; }
 const GoldenCase kGolden[] = {
     {"spec-example-5s-ballistic-double.gizmolog", "boards/spec-example.txt", MotionModel::Ballistic,
      Precision::Double, 5.0, true},
+    // Long enough for keyframes: their bytes (the board's state) must agree across builds too.
+    {"spec-example-25s-ballistic-double.gizmolog", "boards/spec-example.txt", MotionModel::Ballistic,
+     Precision::Double, 25.0, true},
     {"spec-example-5s-classic-double.gizmolog", "boards/spec-example.txt", MotionModel::Classic, Precision::Double,
      5.0, true},
     {"four-balls-meeting-3s-ballistic-long-double.gizmolog", "boards/scenes/four-balls-meeting.txt",
