@@ -25,6 +25,12 @@ std::uint64_t frameChecksum(std::uint8_t type, std::uint32_t length, std::span<c
   return checksum64(payload, (std::uint64_t(type) << 32) | length);
 }
 
+// The same entry, the time compared bit for bit.
+bool sameEntry(const ChunkEntry& x, const ChunkEntry& y) {
+  return x.offset == y.offset && x.eventsDone == y.eventsDone && x.ticksDone == y.ticksDone &&
+         std::bit_cast<std::uint64_t>(x.time) == std::bit_cast<std::uint64_t>(y.time);
+}
+
 std::string typeName(std::uint8_t type) {
   switch (static_cast<FrameType>(type)) {
     case FrameType::Header: return "header";
@@ -309,13 +315,7 @@ void LogReader::walkFrames(std::uint64_t from) {
       // A complete index without a readable trailer: either the trailer is cut off, or damaged.
       const std::vector<ChunkEntry> walked = chunks_;
       parseIndex(payload);
-      const bool agree = std::equal(walked.begin(), walked.end(), chunks_.begin(), chunks_.end(),
-                                    [](const ChunkEntry& x, const ChunkEntry& y) {
-                                      return x.offset == y.offset && x.eventsDone == y.eventsDone &&
-                                             x.ticksDone == y.ticksDone &&
-                                             std::bit_cast<std::uint64_t>(x.time) == std::bit_cast<std::uint64_t>(y.time);
-                                    });
-      if (!agree) throw FormatError("the index disagrees with the chunks", at);
+      if (!std::equal(walked.begin(), walked.end(), chunks_.begin(), chunks_.end(), sameEntry)) throw FormatError("the index disagrees with the chunks", at);
       chunks_ = walked;
       chunksEnd_ = at;
       if (size - next >= kTrailerSize) throw FormatError("the trailer is corrupt", size - kTrailerSize);
@@ -325,7 +325,7 @@ void LogReader::walkFrames(std::uint64_t from) {
     }
     ChunkPreamble p;
     readPreamble(payload, p);
-    chunks_.push_back(ChunkEntry{at, p.eventsDone, p.ticksDone, p.time});
+    chunks_.push_back(entryOf(p, at));
     at = next;
   }
 }
@@ -338,8 +338,7 @@ std::vector<std::uint8_t> LogReader::chunkPayload(std::size_t i) const {
   if (next != expected) throw FormatError("chunk " + std::to_string(i) + " does not end where the next begins", e.offset);
   ChunkPreamble p;
   readPreamble(payload, p);
-  if (p.eventsDone != e.eventsDone || p.ticksDone != e.ticksDone ||
-      std::bit_cast<std::uint64_t>(p.time) != std::bit_cast<std::uint64_t>(e.time) || p.hasKeyframe != (i > 0))
+  if (!sameEntry(entryOf(p, e.offset), e) || p.hasKeyframe != (i > 0))
     throw FormatError("chunk " + std::to_string(i) + " disagrees with the index", e.offset);
   return payload;
 }

@@ -2,7 +2,6 @@
 // precision named in the log's header.
 #include "gizmo/replay/replay.hpp"
 
-#include <cstring>
 #include <map>
 
 #include "gizmo/replay/chunk.hpp"
@@ -22,6 +21,19 @@ std::string nameOf(const std::vector<std::string>& names, GizmoId id) {
   return id == kNoGizmo ? "" : "#" + std::to_string(id);
 }
 
+// A ball as an executed event left it: where it was hit, its velocity before and after.
+template <class Real>
+BallView ballView(const BallChange<Real>& c, const std::vector<std::string>& names) {
+  return BallView{c.ball,
+                  nameOf(names, c.ball),
+                  exact(c.position.x),
+                  exact(c.position.y),
+                  exact(c.velocityAfter.x),
+                  exact(c.velocityAfter.y),
+                  exact(c.velocityBefore.x),
+                  exact(c.velocityBefore.y)};
+}
+
 template <class Real>
 DecisionView viewOf(const Decision<Real>& d, std::uint64_t index, std::uint64_t eventIndex,
                     const std::vector<std::string>& names) {
@@ -37,10 +49,7 @@ DecisionView viewOf(const Decision<Real>& d, std::uint64_t index, std::uint64_t 
   v.b = d.event.b;
   v.feature = d.event.feature;
   v.sequence = d.event.sequence;
-  for (const BallChange<Real>& c : d.outcome.balls())
-    v.balls.push_back(BallView{c.ball, nameOf(names, c.ball), exact(c.position.x), exact(c.position.y),
-                               exact(c.velocityAfter.x), exact(c.velocityAfter.y), exact(c.velocityBefore.x),
-                               exact(c.velocityBefore.y)});
+  for (const BallChange<Real>& c : d.outcome.balls()) v.balls.push_back(ballView(c, names));
   v.gizmo = d.gizmo;
   v.other = d.other;
   v.key = d.key;
@@ -182,7 +191,7 @@ StateView seekAs(const OpenedLog& log, const SeekTarget& target) {
     ++i;
   std::uint64_t ticksDone = 0;
   std::unique_ptr<GameBoard<Real>> board = boardAtChunk<Real>(log, i, &ticksDone);
-  if (target.time && Real(fromDouble<Real>(*target.time)) < board->now() && i > 0)
+  if (target.time && fromDouble<Real>(*target.time) < board->now() && i > 0)
     board = boardAtChunk<Real>(log, --i, &ticksDone);
   typename GameBoard<Real>::RunLimit limit;
   if (target.events) limit.events = *target.events;
@@ -192,7 +201,7 @@ StateView seekAs(const OpenedLog& log, const SeekTarget& target) {
   if (target.events && board->executedTotal() != *target.events)
     throw std::out_of_range("the run has " + std::to_string(board->executedTotal()) + " events, fewer than " +
                             std::to_string(*target.events));
-  const Real at = target.time ? maxOf(Real(fromDouble<Real>(*target.time)), board->now()) : board->now();
+  const Real at = target.time ? maxOf(fromDouble<Real>(*target.time), board->now()) : board->now();
   return stateOf(*board, at, log.gizmoNames);
 }
 
@@ -201,7 +210,7 @@ StateView seekAs(const OpenedLog& log, const SeekTarget& target) {
 // Compares each chunk of the new run with the log's as it is made.
 class ComparingSink final : public ChunkSink {
  public:
-  struct Parted {};   // the runs differ in chunk `chunk`
+  struct Parted {};   // the run's chunk `chunks - 1` (kept in `ours`) differs from the log's
   struct LogEnds {};  // the log was cut off and everything it holds matched
 
   explicit ComparingSink(const LogReader& log) : log_(log) {}
@@ -262,15 +271,7 @@ class ChunkSide {
     time_ = d.time;
     if (d.type != DecisionType::Executed) return;
     ++events_;
-    for (const BallChange<Real>& ch : d.outcome.balls())
-      balls_[ch.ball] = BallView{ch.ball,
-                                 nameOf(log_.gizmoNames, ch.ball),
-                                 exact(ch.position.x),
-                                 exact(ch.position.y),
-                                 exact(ch.velocityAfter.x),
-                                 exact(ch.velocityAfter.y),
-                                 exact(ch.velocityBefore.x),
-                                 exact(ch.velocityBefore.y)};
+    for (const BallChange<Real>& ch : d.outcome.balls()) balls_[ch.ball] = ballView(ch, log_.gizmoNames);
   }
   StateView state() const {
     StateView s;
@@ -376,8 +377,10 @@ ReplayReport replayAs(const OpenedLog& log) {
     report.where = "the run ends differently: " + (sink.ended->completed ? std::string("completed") : sink.ended->message);
     return report;
   }
-  if (sink.headerDiffers) report.note = "the header was written by another version (" + log.header.toolkit + ")";
-  if (!log.reader.truncation().empty()) report.note = log.reader.truncation();
+  std::vector<std::string> notes;
+  if (sink.headerDiffers) notes.push_back("the header was written by another version (" + log.header.toolkit + ")");
+  if (!log.reader.truncation().empty()) notes.push_back(log.reader.truncation());
+  for (const std::string& n : notes) report.note += (report.note.empty() ? "" : "; ") + n;
   report.events = board->executedTotal();
   return report;
 }

@@ -81,7 +81,7 @@ std::string tempPath(const std::string& stem) {
   std::string name = std::string(info->test_suite_name()) + "." + info->name() + "." + stem;
   for (char& c : name)
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-') c = '_';
-  return ::testing::TempDir() + "gizmo-" + std::to_string(::getpid()) + "-" + name + ".gizmolog";
+  return ::testing::TempDir() + "gizmo-" + std::to_string(::getpid()) + "-" + name + ".gzlog";
 }
 
 Bytes readBytes(const std::string& path) {
@@ -861,14 +861,14 @@ struct GoldenCase {
 void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.file; }
 
 const GoldenCase kGolden[] = {
-    {"spec-example-5s-ballistic-double.gizmolog", "boards/spec-example.txt", MotionModel::Ballistic,
+    {"spec-example-5s-ballistic-double.gzlog", "boards/spec-example.txt", MotionModel::Ballistic,
      Precision::Double, 5.0, true},
     // Long enough for keyframes: their bytes (the board's state) must agree across builds too.
-    {"spec-example-25s-ballistic-double.gizmolog", "boards/spec-example.txt", MotionModel::Ballistic,
+    {"spec-example-25s-ballistic-double.gzlog", "boards/spec-example.txt", MotionModel::Ballistic,
      Precision::Double, 25.0, true},
-    {"spec-example-5s-classic-double.gizmolog", "boards/spec-example.txt", MotionModel::Classic, Precision::Double,
+    {"spec-example-5s-classic-double.gzlog", "boards/spec-example.txt", MotionModel::Classic, Precision::Double,
      5.0, true},
-    {"four-balls-meeting-3s-ballistic-long-double.gizmolog", "boards/scenes/four-balls-meeting.txt",
+    {"four-balls-meeting-3s-ballistic-long-double.gzlog", "boards/scenes/four-balls-meeting.txt",
      MotionModel::Ballistic, Precision::LongDouble, 3.0, false},
 };
 

@@ -49,6 +49,10 @@ struct ChunkPreamble {
 void writePreamble(std::vector<std::uint8_t>& out, const ChunkPreamble& p);
 // Reads the preamble at the start of a chunk payload; returns its size in bytes.
 std::size_t readPreamble(std::span<const std::uint8_t> payload, ChunkPreamble& p);
+// The index entry of a chunk at `offset` with this preamble.
+inline ChunkEntry entryOf(const ChunkPreamble& p, std::uint64_t offset) {
+  return ChunkEntry{offset, p.eventsDone, p.ticksDone, p.time};
+}
 
 // Writes frames to a file as they come; each chunk reaches the operating system before the next
 // is made, so a crash leaves a log that is readable up to its last complete chunk.

@@ -32,6 +32,11 @@ inline EventFields scheduledFields(EventKind k) {
     default: return {true, false, false};
   }
 }
+// Whether the short form (only the fields its kind uses) holds the event.
+template <class Real>
+bool shortFormHolds(const Event<Real>& e, const EventFields& f) {
+  return (f.a || e.a == kNoGizmo) && (f.b || e.b == kNoGizmo) && (f.feature || e.feature == -1);
+}
 
 template <class Real>
 struct RecordContext {
@@ -97,6 +102,7 @@ class RecordEncoder {
     held_.clear();
     impliedFriction_.reset();
     nowPlusTick_ = c_.now + c_.maxTick;
+    lastFrictionK_ = lastTickK_ = 0;  // a chunk's bytes depend on nothing before its keyframe
   }
 
   void scheduled(const Event<Real>& e) {
@@ -105,7 +111,7 @@ class RecordEncoder {
     if (e.sequence != c_.nextSequence) throw std::logic_error("replay: events scheduled out of sequence");
     ++c_.nextSequence;
     const EventFields f = scheduledFields(e.kind);
-    const bool fits = (f.a || e.a == kNoGizmo) && (f.b || e.b == kNoGizmo) && (f.feature || e.feature == -1);
+    const bool fits = shortFormHolds(e, f);
     std::uint8_t tag = static_cast<std::uint8_t>(e.kind);
     if (!fits) tag |= kScheduledAllFields;
     std::int64_t k = 0;
@@ -373,7 +379,7 @@ class RecordDecoder {
       if (all || f.feature) e.feature = static_cast<std::int32_t>(bounded(INT32_MIN, INT32_MAX));
       // Every event has one spelling: the full form only for an event its kind's short form
       // cannot hold.
-      if (all && (f.a || e.a == kNoGizmo) && (f.b || e.b == kNoGizmo) && (f.feature || e.feature == -1))
+      if (all && shortFormHolds(e, f))
         throw FormatError("an event written in full that its short form holds", start);
       switch (static_cast<TimeForm>(form)) {
         case TimeForm::Now: e.time = c_.now; break;
@@ -449,8 +455,6 @@ class RecordDecoder {
     }
     throw FormatError("unknown record", start);
   }
-
-  const std::unordered_map<std::uint64_t, Event<Real>>& live() const { return live_; }
 
  private:
   std::int64_t bounded(std::int64_t lo, std::int64_t hi) {

@@ -3,6 +3,7 @@
 // board becomes a record; at the first tick boundary after a chunk is full, the board's state
 // is saved as the next chunk's keyframe.
 #include <algorithm>
+#include <utility>
 
 #include "gizmo/core/board/game_board.hpp"
 #include "gizmo/replay/chunk.hpp"
@@ -17,56 +18,52 @@ class Recorder final : public BoardObserver<Real> {
   }
 
   void eventScheduled(const Event<Real>& e) override {
-    if (pending_) beginPending();
+    if (next_) beginNext();
     encoder_.scheduled(e);
   }
   void eventRemoved(const Event<Real>& e) override {
-    if (pending_) beginPending();
+    if (next_) beginNext();
     encoder_.removed(e);
   }
   void eventExecuted(const Event<Real>& e, const EventOutcome<Real>& o) override {
-    if (pending_) beginPending();
+    if (next_) beginNext();
     encoder_.executed(e, o);
   }
   void triggerFired(const Real& t, GizmoId s, GizmoId g) override {
-    if (pending_) beginPending();
+    if (next_) beginNext();
     encoder_.trigger(t, s, g);
   }
   void actionPerformed(const Real& t, GizmoId g) override {
-    if (pending_) beginPending();
+    if (next_) beginNext();
     encoder_.action(t, g);
   }
   void inputApplied(const Real& t, int key, KeyDirection d) override {
-    if (pending_) beginPending();
+    if (next_) beginNext();
     encoder_.input(t, key, d);
   }
   void modelRuleApplied(const Real& t, ModelRule r, GizmoId g, GizmoId o) override {
-    if (pending_) beginPending();
+    if (next_) beginNext();
     encoder_.rule(t, r, g, o);
   }
   void tickBoundary(const Real& t) override {
-    if (pending_) beginPending();
+    if (next_) beginNext();
     encoder_.tick(t);
     ++ticks_;
     if (chunk_.size() >= limit_) {
       close();
-      // The next chunk starts from the state now; it is written once a record follows.
-      pendingState_ = board_.saveState();
-      pending_ = true;
+      // The next chunk starts from the state now; it is begun once a record follows.
+      next_ = board_.saveState();
     }
   }
 
   // Closes the last chunk and the log.
   void finish(bool completed, const std::string& message = {}) {
-    if (!pending_) close();
+    if (!next_) close();
     sink_.finish(RunEnd{completed, board_.executedTotal(), toDouble(board_.now()), message});
   }
 
  private:
-  void beginPending() {
-    pending_ = false;
-    begin(std::move(pendingState_));
-  }
+  void beginNext() { begin(std::exchange(next_, std::nullopt)); }
 
   void begin(std::optional<BoardState<Real>> state) {
     chunk_.clear();
@@ -91,7 +88,7 @@ class Recorder final : public BoardObserver<Real> {
       encoder_.reset(Real(0), 0);
     }
     limit_ = std::max(kChunkTargetBytes, 8 * keyframeBytes);
-    entry_ = ChunkEntry{0, p.eventsDone, p.ticksDone, p.time};
+    entry_ = entryOf(p, 0);
   }
 
   void close() {
@@ -107,8 +104,7 @@ class Recorder final : public BoardObserver<Real> {
   ChunkEntry entry_;
   std::size_t limit_ = kChunkTargetBytes;
   std::uint64_t ticks_ = 0;
-  bool pending_ = false;
-  std::optional<BoardState<Real>> pendingState_;
+  std::optional<BoardState<Real>> next_;  // the keyframe of the chunk to begin
 };
 
 }  // namespace gizmo::replay

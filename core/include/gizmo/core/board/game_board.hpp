@@ -127,6 +127,8 @@ class GameBoard final : private BoardAccess<Real> {
 
   void rebuild();
   void checkRestoredEvent(const Event<Real>& e, const BoardState<Real>& state) const;
+  bool isGizmoId(std::int64_t id) const { return id >= 0 && std::uint64_t(id) < gizmos_.size(); }
+  bool isBallId(std::int64_t id) const { return isGizmoId(id) && ballIndex_[std::size_t(id)] >= 0; }
   void tickUntil(const Real& end);
   void advanceTo(const Real& t);
   void execute(const Event<Real>& e);

@@ -29,36 +29,33 @@ BoardState<Real> GameBoard<Real>::saveState() const {
 // than now. Executing anything else could touch a gizmo through the wrong interface.
 template <class Real>
 void GameBoard<Real>::checkRestoredEvent(const Event<Real>& e, const BoardState<Real>& state) const {
-  const auto n = static_cast<GizmoId>(gizmos_.size());
   auto fail = [&](const std::string& why) {
     throw StateError("queued event " + std::to_string(e.sequence) + " (" + std::string(eventKindName(e.kind)) +
                      "): " + why);
   };
-  auto isGizmo = [&](GizmoId id) { return id >= 0 && id < n; };
-  auto isBall = [&](GizmoId id) { return isGizmo(id) && ballIndex_[std::size_t(id)] >= 0; };
   if (static_cast<int>(e.kind) >= kEventKindCount) fail("unknown kind");
   if (e.sequence >= state.nextSequence) fail("sequence number not yet handed out");
   if (e.time < state.now) fail("earlier than the present");
   switch (e.kind) {
     case EventKind::Collision: {
-      if (!isGizmo(e.a) || !isGizmo(e.b) || e.a == e.b) fail("not a pair of gizmos");
-      const GizmoId ball = isBall(e.a) ? e.a : e.b, other = ball == e.a ? e.b : e.a;
-      if (!isBall(ball)) fail("no ball involved");
+      if (!isGizmoId(e.a) || !isGizmoId(e.b) || e.a == e.b) fail("not a pair of gizmos");
+      const GizmoId ball = isBallId(e.a) ? e.a : e.b, other = ball == e.a ? e.b : e.a;
+      if (!isBallId(ball)) fail("no ball involved");
       if (colliders_[std::size_t(ballIndex_[std::size_t(ball)]) * gizmos_.size() + std::size_t(other)] != e.a)
         fail("not the collider of a formed pair");
       break;
     }
     case EventKind::Leave:
-      if (!isGizmo(e.a) || gizmos_[std::size_t(e.a)]->kind() != GizmoKind::Absorber || !isBall(e.b))
+      if (!isGizmoId(e.a) || gizmos_[std::size_t(e.a)]->kind() != GizmoKind::Absorber || !isBallId(e.b))
         fail("not an absorber and a ball");
       break;
     case EventKind::ContactEnd:
     case EventKind::FrictionTick:
     case EventKind::Recalculate:
-      if (!isBall(e.a)) fail("not a ball");
+      if (!isBallId(e.a)) fail("not a ball");
       break;
     case EventKind::FlipperStop: {
-      const bool flipper = isGizmo(e.a) && (gizmos_[std::size_t(e.a)]->kind() == GizmoKind::LeftFlipper ||
+      const bool flipper = isGizmoId(e.a) && (gizmos_[std::size_t(e.a)]->kind() == GizmoKind::LeftFlipper ||
                                             gizmos_[std::size_t(e.a)]->kind() == GizmoKind::RightFlipper);
       if (!flipper) fail("not a flipper");
       break;
@@ -98,8 +95,8 @@ void GameBoard<Real>::restoreState(const BoardState<Real>& s) {
   struct Ids final : GizmoIdCheck {
     const GameBoard& board;
     explicit Ids(const GameBoard& b) : board(b) {}
-    bool isGizmo(std::int64_t id) const override { return id >= 0 && std::uint64_t(id) < board.gizmos_.size(); }
-    bool isBall(std::int64_t id) const override { return isGizmo(id) && board.ballIndex_[std::size_t(id)] >= 0; }
+    bool isGizmo(std::int64_t id) const override { return board.isGizmoId(id); }
+    bool isBall(std::int64_t id) const override { return board.isBallId(id); }
   } ids(*this);
   for (std::size_t g = 0; g < n; ++g) {
     GizmoStateReader<Real> in(s.gizmos[g]);
