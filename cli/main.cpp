@@ -6,6 +6,7 @@
 #include "board_input.hpp"
 #include "log_commands.hpp"
 #include "run_command.hpp"
+#include "verify_command.hpp"
 
 int main(int argc, char** argv) {
   using namespace gizmo::cli;
@@ -59,6 +60,26 @@ int main(int argc, char** argv) {
   dumpCmd->add_option("--from", dump.from, "Only decisions made at or after this board time");
   dumpCmd->add_option("--to", dump.to, "Only decisions made at or before this board time");
   dumpCmd->callback([&] { code = dumpCommand(dump); });
+
+  VerifyOptions verify;
+  CLI::App* verifyCmd = app.add_subcommand(
+      "verify", "Run a board at every rung of the precision ladder and compare each run's decisions with a reference\n"
+                "run: how long each agrees, its largest errors, its energy drift and its cost.\n"
+                "Example: gizmo verify --time 10 --precisions double,long-double,mpfr:256 --json");
+  addRunOptions(*verifyCmd, verify.run, false);
+  verifyCmd->add_option("--precisions", verify.precisions,
+                        std::string("Comma-separated rungs (default: all but rational, and rational where the scene allows): ") +
+                            gizmo::kPrecisionNames);
+  verifyCmd->add_option("--reference", verify.reference, "The run to compare with (default: rational where the scene "
+                                                         "allows, else mpfr:256)");
+  CLI::Option* certify = verifyCmd->add_flag(
+      "--certify", verify.certify,
+      "Check a recorded double run (give its log instead of a board) decision by decision with interval arithmetic;\n"
+      "exit 1 when a decision is proven wrong");
+  for (const char* runOnly : {"--time", "--model", "--max-tick", "--keys", "--precisions", "--reference"})
+    certify->excludes(verifyCmd->get_option(runOnly));
+  verifyCmd->add_flag("--json", verify.run.json, "Print one JSON object");
+  verifyCmd->callback([&] { code = verifyCommand(verify); });
 
   try {
     app.parse(argc, argv);

@@ -18,6 +18,11 @@ int recordCommand(const RecordOptions& o) {
     std::cerr << "gizmo record: -o LOG is required\n";
     return kExitBadInput;
   }
+  if (!recordable(run.precision)) {
+    std::cerr << "gizmo record: " << precisionName(run.precision)
+              << " runs cannot be recorded: the log has no encoding for them (use gizmo verify to compare them)\n";
+    return kExitBadInput;
+  }
   // The file is created only once the input is known to be good.
   const auto start = std::chrono::steady_clock::now();
   replay::RecordResult result;

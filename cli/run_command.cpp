@@ -53,6 +53,9 @@ int runCommand(const RunOptions& o) {
   } catch (const StallError& e) {
     std::cerr << "gizmo run: the simulation stalled: " << e.what() << '\n';
     return kExitCheckFailed;
+  } catch (const IrrationalValue& e) {
+    std::cerr << "gizmo run: an exact run cannot go on: it needs " << e.what() << '\n';
+    return kExitCheckFailed;
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   printRunSummary(run.boardName, o, summary, wall);

@@ -8,12 +8,12 @@
 
 namespace gizmo::cli {
 
-void addRunOptions(CLI::App& command, RunOptions& o) {
+void addRunOptions(CLI::App& command, RunOptions& o, bool withPrecision) {
   command.add_option("board", o.board, "Board file, XML or text (default: the specification's example, built in)");
   command.add_option("--time", o.time, "Seconds of board time to simulate")->capture_default_str();
   command.add_option("--model", o.model, "Motion model: ballistic or classic")->capture_default_str();
-  command.add_option("--precision", o.precision, "Scalar: float, double, long-double, float128, mpfr:BITS")
-      ->capture_default_str();
+  if (withPrecision)
+    command.add_option("--precision", o.precision, std::string("Scalar: ") + kPrecisionNames)->capture_default_str();
   command.add_option("--max-tick", o.maxTick, "Maximum tick length, seconds")->capture_default_str();
   command.add_option("--keys", o.keys, "Key script: one 'TIME down|up KEYCODE' per line");
 }

@@ -22,8 +22,9 @@ struct RunOptions {
   bool json = false;
 };
 
-// Adds the run options (board, --time, --model, --precision, --max-tick, --keys) to a subcommand.
-void addRunOptions(CLI::App& command, RunOptions& options);
+// Adds the run options (board, --time, --model, --precision, --max-tick, --keys) to a subcommand;
+// without --precision for a command that chooses its own scalars.
+void addRunOptions(CLI::App& command, RunOptions& options, bool withPrecision = true);
 
 struct CheckedRun {
   RunRequest request;

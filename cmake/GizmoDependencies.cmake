@@ -29,3 +29,12 @@ endif()
 if(GIZMO_BUILD_BENCH)
   find_package(benchmark REQUIRED)
 endif()
+# MPFI (interval arithmetic over MPFR, for certified decisions) ships no CMake or pkg-config file.
+find_path(GIZMO_MPFI_INCLUDE_DIR mpfi.h REQUIRED)
+find_library(GIZMO_MPFI_LIBRARY mpfi REQUIRED)
+if(NOT TARGET gizmo_mpfi)
+  add_library(gizmo_mpfi INTERFACE IMPORTED)
+  set_target_properties(gizmo_mpfi PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${GIZMO_MPFI_INCLUDE_DIR}"
+    INTERFACE_LINK_LIBRARIES "${GIZMO_MPFI_LIBRARY};PkgConfig::MPFR;PkgConfig::GMP")
+endif()

@@ -387,7 +387,7 @@ ReplayReport replayAs(const OpenedLog& log) {
 
 template <class F>
 decltype(auto) withLogScalar(const OpenedLog& log, F&& f) {
-  return withPrecision(log.precision, [&]<class Real>() -> decltype(auto) {
+  return withRecordablePrecision(log.precision, [&]<class Real>() -> decltype(auto) {
     if (scalarName<Real>() != log.header.scalar)
       throw FormatError("the log was made with " + log.header.scalar + ", this build computes " + scalarName<Real>(), 0);
     return f.template operator()<Real>();
@@ -397,7 +397,7 @@ decltype(auto) withLogScalar(const OpenedLog& log, F&& f) {
 }  // namespace
 
 RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink) {
-  return withPrecision(precision, [&]<class Real>() { return recordAs<Real>(request, precision, sink); });
+  return withRecordablePrecision(precision, [&]<class Real>() { return recordAs<Real>(request, precision, sink); });
 }
 
 OpenedLog openLog(std::unique_ptr<ByteSource> source, bool verifyChecksums) {
@@ -406,6 +406,7 @@ OpenedLog openLog(std::unique_ptr<ByteSource> source, bool verifyChecksums) {
   RunRequest request = requestOf(header);
   const std::optional<PrecisionChoice> precision = parsePrecision(header.precision);
   if (!precision) throw FormatError("header: unknown precision '" + header.precision + "'", 0);
+  if (!recordable(*precision)) throw FormatError("header: precision '" + header.precision + "' cannot be recorded", 0);
   std::vector<std::string> names;
   const auto board = buildBoard<double>(request.board, PhysicsParams<double>());
   for (std::size_t g = 0; g < board->gizmoCount(); ++g) names.push_back(board->gizmo(GizmoId(g)).name());

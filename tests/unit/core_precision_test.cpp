@@ -42,9 +42,50 @@ TEST(PrecisionLadder, DropTimeToEachTypesPrecision) {
   expectDropTime<double>(8 * 2.3e-16);
   expectDropTime<long double>(8 * 1.1e-19);
   expectDropTime<Float128>(8 * 1.0e-34);
+  expectDropTime<Bin50>(8 * toDouble(epsilonOf<Bin50>()));
+  expectDropTime<Bin100>(8 * toDouble(epsilonOf<Bin100>()));
   setMpfrBits(256);
   expectDropTime<MpfrReal>(8 * 1.8e-77);
   setMpfrBits(53);
+}
+
+// The drop time is √0.62: an exact run says so instead of rounding it.
+TEST(PrecisionLadder, RationalRunRefusesAnIrrationalTime) {
+  try {
+    dropTime<Rational>();
+    ADD_FAILURE() << "the rational run rounded an irrational time";
+  } catch (const IrrationalValue& e) {
+    EXPECT_NE(std::string(e.what()).find("not a perfect square"), std::string::npos) << e.what();
+  }
+}
+
+TEST(PrecisionLadder, RationalSquareRootIsExactOrRefused) {
+  EXPECT_EQ(sqrtOf(Rational(9) / Rational(16)), Rational(3) / Rational(4));
+  EXPECT_EQ(sqrtOf(Rational(0)), Rational(0));
+  EXPECT_THROW(sqrtOf(Rational(2)), IrrationalValue);
+  EXPECT_THROW(sqrtOf(Rational(4) / Rational(3)), IrrationalValue);  // only the numerator is a square
+  EXPECT_THROW(sqrtOf(Rational(-4)), IrrationalValue);
+  EXPECT_THROW(piOf<Rational>(), IrrationalValue);
+}
+
+// The same drop in the classic model moves in straight lines between ticks: every time is a
+// linear root, and the rational run lands on the absorber exactly where the rules put it.
+TEST(PrecisionLadder, RationalClassicDropIsExact) {
+  BoardSpec s = emptyBoard(25, 0, 0);
+  s.gizmos.push_back(gizmoAt(GizmoType::Absorber, "A", 0, 19, 0, 20, 1));
+  s.balls.push_back(ballAt("B", 1, 11));
+  auto board = test::build<Rational>(s, MotionModel::Classic, 0.05);
+  test::Recorder<Rational> rec;
+  board->setObserver(&rec);
+  board->tick(Rational(1));
+  const auto hit = std::find_if(rec.executed.begin(), rec.executed.end(),
+                                [](const auto& e) { return e.event.kind == EventKind::Collision; });
+  ASSERT_NE(hit, rec.executed.end());
+  // The ball reaches y = 18.75 moving at a tick's constant speed: the time is rational, and its
+  // gap is exactly 0 there.
+  const Ball<Rational>& ball = *board->gizmo(*board->find("B")).asBall();
+  EXPECT_EQ(hit->outcome.balls()[0].position.y, Rational(75) / Rational(4));
+  EXPECT_TRUE(ball.captured());
 }
 
 TEST(PrecisionLadder, HigherPrecisionAgreesWithDoubleToDoublesPrecision) {

@@ -41,6 +41,18 @@ void assign(Big& dst, const Float128& x) {
   mpfr_add_d(dst.get(), dst.get(), d[2], MPFR_RNDN);
 }
 void assign(Big& dst, const MpfrReal& x) { mpfr_set(dst.get(), x.backend().data(), MPFR_RNDN); }
+// cpp_bin_float: the doubles its leading bits round to, each taken off exactly.
+template <class Real>
+  requires std::is_same_v<Real, gizmo::Bin50> || std::is_same_v<Real, gizmo::Bin100>
+void assign(Big& dst, const Real& x) {
+  mpfr_set_zero(dst.get(), 1);
+  Real rest = x;
+  for (int i = 0; i < 8 && rest != 0; ++i) {
+    const double part = static_cast<double>(rest);
+    mpfr_add_d(dst.get(), dst.get(), part, MPFR_RNDN);
+    rest = rest - Real(part);
+  }
+}
 
 template <class Real>
 long precisionBits() {
@@ -114,6 +126,7 @@ template <class Real>
 int randomCountFor() {
   if constexpr (std::is_same_v<Real, MpfrReal>) return 1500;
   if constexpr (std::is_same_v<Real, Float128>) return 4000;
+  if constexpr (std::is_same_v<Real, gizmo::Bin50> || std::is_same_v<Real, gizmo::Bin100>) return 600;
   return 12000;
 }
 
@@ -148,6 +161,12 @@ void checkAgainstMpfr(long truthBits) {
 }
 
 TYPED_TEST(SinCosTest, WithinOneUlpOfMpfr) { checkAgainstMpfr<TypeParam>(200); }
+
+// Boost's own binary floats, wider than the table of pi/2's parts: their pi/2 comes from MPFR.
+TEST(SinCosWide, Bin50AndBin100WithinOneUlpOfMpfr) {
+  checkAgainstMpfr<gizmo::Bin50>(300);
+  checkAgainstMpfr<gizmo::Bin100>(500);
+}
 
 TYPED_TEST(SinCosTest, PythagoreanIdentity) {
   using Real = TypeParam;

@@ -704,7 +704,7 @@ Moment momentOf(const StateView& s) {
 // The same run, not recorded, limited directly on the board; positions taken when it stopped
 // (an event limit) or at the time asked for (a time limit).
 Moment directMoment(const RunRequest& request, const PrecisionChoice& precision, const SeekTarget& target) {
-  return withPrecision(precision, [&]<class Real>() {
+  return withRecordablePrecision(precision, [&]<class Real>() {
     std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(request);
     typename GameBoard<Real>::RunLimit limit;
     if (target.events) limit.events = *target.events;

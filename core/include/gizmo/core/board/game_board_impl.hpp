@@ -472,8 +472,20 @@ void GameBoard<Real>::computePair(GizmoId ballId, GizmoId other) {
   const Real limit = minOf(validUntil_[std::size_t(ballId)], validUntil_[std::size_t(other)]);
   if (!(limit < infinity())) return;  // neither side can move: nothing to predict
   const GizmoId collidee = collider == ballId ? other : ballId;
-  const std::optional<Contact<Real>> c =
-      gizmos_[std::size_t(collider)]->timeUntilCollision(*gizmos_[std::size_t(collidee)], now_, limit, params_);
+  auto predict = [&] {
+    return gizmos_[std::size_t(collider)]->timeUntilCollision(*gizmos_[std::size_t(collidee)], now_, limit, params_);
+  };
+  std::optional<Contact<Real>> c;
+  if constexpr (kExactScalar<Real>) {
+    try {
+      c = predict();
+    } catch (const IrrationalValue& e) {  // say where the exact run needed it
+      throw IrrationalValue(std::string(e.what()) + ", for the contact of " + gizmos_[std::size_t(collider)]->name() +
+                            " with " + gizmos_[std::size_t(collidee)]->name());
+    }
+  } else {
+    c = predict();
+  }
   if (c) schedule(c->kind, c->time, collider, collidee, c->feature);
 }
 

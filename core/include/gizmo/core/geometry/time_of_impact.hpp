@@ -75,11 +75,13 @@ std::optional<Real> circleTimeOfImpact(const Trajectory<Real>& t, const Real& r,
     const Real speed2 = lengthSquared(t.v);
     Real along = speed2 == Real(0) ? Real(0) : Real(-dot(d, t.v) / speed2);
     along = minOf(maxOf(along, Real(0)), limit);
-    const Real closest = length(Vec2<Real>(d + along * t.v));
+    const Real closest2 = lengthSquared(Vec2<Real>(d + along * t.v));
     const Real bend = half * length(t.a) * limit * limit;
-    // A little headroom for the rounding of the lines above keeps the test a bound.
+    // A little headroom for the rounding of the lines above keeps the test a bound. Squared,
+    // so that an exact run takes no square root here.
     const Real slack = Real(1) + Real(16) * epsilonOf<Real>();
-    if (reach * slack + bend < closest) return std::nullopt;
+    const Real farthest = reach * slack + bend;
+    if (farthest * farthest < closest2) return std::nullopt;
   }
   const Real quarter = Real(1) / Real(4);
   const std::array<Real, 5> c{dist2 - reach * reach, Real(2) * dot(d, t.v), lengthSquared(t.v) + dot(d, t.a),

@@ -289,7 +289,9 @@ class Ball final : public AbstractGizmo<Real> {
   // 1/(μ₂ Δt) the per-step law would reverse the ball, which no friction does.
   static Vec2<Real> frictionApplied(const Vec2<Real>& v, const Real& dt, const PhysicsParams<Real>& params) {
     if (params.mu == Real(0) && params.mu2 == Real(0)) return v;
-    Real factor = Real(1) - params.mu * dt - params.mu2 * length(v) * dt;
+    Real factor = Real(1) - params.mu * dt;
+    // Without μ₂ the speed is not needed, and an exact run must not take its square root.
+    if (params.mu2 != Real(0)) factor = factor - params.mu2 * length(v) * dt;
     if (factor < Real(0)) factor = Real(0);
     return factor * v;
   }

@@ -27,6 +27,7 @@
 // error (at an exact tangency, say) a touch, a near miss and a very shallow dip can be confused.
 #include <array>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -171,6 +172,11 @@ Real solveEntry(const Value& value, const Slope& slope, Real a, Real b, Real fb,
 template <class Real>
 Real solveSignChange(const Quartic<Real>& p, const Real& a, const Real& pa, const Real& b,
                      const Real& pb) {
+  // Bisection in an exact scalar would never end with the root, only with ever longer
+  // rationals near it.
+  if constexpr (kExactScalar<Real>)
+    throw IrrationalValue("a root of a polynomial of degree " + std::to_string(p.degree) +
+                          " (the turning points of a ballistic gap)");
   if (pa > 0) {
     return solveEntry(
         [&p](const Real& t) -> Real { return p.value(t); },
@@ -280,12 +286,18 @@ std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, con
   detail::rootsInside(g.derivative(), lo, hi, turns);
   // Up to degree 2 the closed form gives the roots to an ulp or two; they seed the bracketed
   // search, which still decides the answer.
+  // They are worked out when a piece first holds an entry: an exact scalar needs a root's square
+  // root only where there is an entry to report.
   detail::RootList<Real> direct;
-  if (g.degree == 1) direct.addIfNew(Real(-c[0] / c[1]));
-  if (g.degree == 2) detail::quadraticRoots(c[2], c[1], c[0], direct);
+  bool directKnown = false;
   // Beyond degree 2 the secant through the piece's ends starts the search: on a monotone piece
   // it is usually close, and the bracketed search still decides.
   auto guessIn = [&](const Real& a, const Real& b, const Real& ga, const Real& gb) -> std::optional<Real> {
+    if (!directKnown) {
+      if (g.degree == 1) direct.addIfNew(Real(-c[0] / c[1]));
+      if (g.degree == 2) detail::quadraticRoots(c[2], c[1], c[0], direct);
+      directKnown = true;
+    }
     for (int k = 0; k < direct.n; ++k)
       if (a <= direct.t[k] && direct.t[k] <= b) return direct.t[k];
     if (g.degree > 2 && gb < ga) return Real(a + ga * (b - a) / (ga - gb));
@@ -297,11 +309,21 @@ std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, con
     const Real b = i < turns.n ? turns.t[i] : hi;
     const Real gb = g.value(b);
     if (ga > 0 && gb <= 0 && (gb < 0 || detail::goesNegativeAfter(g, b))) {
-      const Real t = gb == 0 ? b
-                             : detail::solveEntry(
-                                   [&g](const Real& x) -> Real { return g.value(x); },
-                                   [&g](const Real& x) -> Real { return g.slope(x); }, a, b, gb,
-                                   guessIn(a, b, ga, gb));
+      Real t = b;
+      if (gb != 0) {
+        const std::optional<Real> guess = guessIn(a, b, ga, gb);
+        if constexpr (kExactScalar<Real>) {
+          // An exact scalar takes the closed-form root as it is: it is the entry, or the entry
+          // is not rational (quadraticRoots has thrown already for a surd) and no search could
+          // give it exactly.
+          if (!guess || g.value(*guess) != 0)
+            throw IrrationalValue("the root of a gap polynomial of degree " + std::to_string(g.degree));
+          t = *guess;
+        } else {
+          t = detail::solveEntry([&g](const Real& x) -> Real { return g.value(x); },
+                                 [&g](const Real& x) -> Real { return g.slope(x); }, a, b, gb, guess);
+        }
+      }
       if (accept(t)) return t;
     }
     a = b;

@@ -1,14 +1,19 @@
 #pragma once
 // What differs between the scalars of the precision ladder, in one place. Generic code calls
-// these instead of std:: functions so that float, double, long double, float128 and MPFR all
-// work; Boost types with expression templates need explicit types, so never write
-// `auto x = a * b` in generic code.
+// these instead of std:: functions so that every scalar of the ladder works: float, double,
+// long double, float128, cpp_bin_float 50 and 100, MPFR, and exact rationals. Boost types with
+// expression templates need explicit types, so never write `auto x = a * b` in generic code.
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/float128.hpp>
+#include <boost/multiprecision/gmp.hpp>
 #include <boost/multiprecision/mpfr.hpp>
 
 namespace gizmo {
@@ -18,11 +23,57 @@ namespace gizmo {
 using MpfrReal = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
                                                boost::multiprecision::et_off>;
 using Float128 = boost::multiprecision::float128;
+// Boost's own binary floats of 50 and 100 decimal digits (168 and 334 bits), expression templates
+// off for the same reason.
+using Bin50 = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<50>,
+                                            boost::multiprecision::et_off>;
+using Bin100 = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<100>,
+                                             boost::multiprecision::et_off>;
+// Exact rationals (GMP's mpq). A run in rationals is exact for as long as every value it needs is
+// rational; the first one that is not (a square root that is not a perfect square, π) throws
+// IrrationalValue, so that an exact run never silently becomes an approximate one.
+using Rational = boost::multiprecision::number<boost::multiprecision::gmp_rational,
+                                               boost::multiprecision::et_off>;
+
+// Whether the scalar computes without rounding (then there are no error terms to recover and
+// no tolerance is ever needed).
+template <class Real>
+inline constexpr bool kExactScalar = std::is_same_v<Real, Rational>;
+
+// An exact run needed a value that is not rational. `what` says which, in words.
+class IrrationalValue : public std::runtime_error {
+ public:
+  explicit IrrationalValue(const std::string& what) : std::runtime_error(what) {}
+};
 
 template <class Real>
 inline Real sqrtOf(const Real& x) {
   using std::sqrt;
   return sqrt(x);  // IEEE 754 rounds sqrt exactly; Boost's types find theirs by ADL
+}
+
+// A rational for a message: its value to 17 digits and how long its numerator and denominator
+// are (an exact run's numbers can have thousands of digits).
+inline std::string approximately(const Rational& x) {
+  const mpq_srcptr q = x.backend().data();
+  char value[40];
+  std::snprintf(value, sizeof value, "%.17g", x.convert_to<double>());
+  return std::string(value) + " (a rational of " + std::to_string(mpz_sizeinbase(mpq_numref(q), 10)) + "/" +
+         std::to_string(mpz_sizeinbase(mpq_denref(q), 10)) + " digits)";
+}
+
+// A rational's square root is rational exactly when its numerator and denominator (in lowest
+// terms) are perfect squares.
+template <>
+inline Rational sqrtOf<Rational>(const Rational& x) {
+  const mpq_srcptr q = x.backend().data();
+  if (mpq_sgn(q) < 0) throw IrrationalValue("the square root of a negative number");
+  if (!mpz_perfect_square_p(mpq_numref(q)) || !mpz_perfect_square_p(mpq_denref(q)))
+    throw IrrationalValue("the square root of " + approximately(x) + ", not a perfect square");
+  Rational root;
+  mpz_sqrt(mpq_numref(root.backend().data()), mpq_numref(q));
+  mpz_sqrt(mpq_denref(root.backend().data()), mpq_denref(q));
+  return root;  // already in lowest terms: the roots of coprime squares are coprime
 }
 
 template <class Real>
@@ -39,6 +90,8 @@ inline const Real& maxOf(const Real& a, const Real& b) { return a < b ? b : a; }
 // The unit roundoff of the type (for MPFR: of the current default precision).
 template <class Real>
 inline Real epsilonOf() { return std::numeric_limits<Real>::epsilon(); }
+template <>
+inline Rational epsilonOf<Rational>() { return Rational(0); }
 // Bits of a freshly made MpfrReal: the precision the current thread computes with.
 inline long mpfrBits() {
   MpfrReal probe;
@@ -65,6 +118,11 @@ inline MpfrReal piOf<MpfrReal>() {
   return p;
 }
 
+template <>
+inline Rational piOf<Rational>() {
+  throw IrrationalValue("π (the angle of a swinging flipper)");
+}
+
 template <class Real>
 inline double toDouble(const Real& x) { return static_cast<double>(x); }
 
@@ -76,6 +134,9 @@ template <> inline std::string scalarName<float>() { return "float"; }
 template <> inline std::string scalarName<double>() { return "double"; }
 template <> inline std::string scalarName<long double>() { return "long-double"; }
 template <> inline std::string scalarName<Float128>() { return "float128"; }
+template <> inline std::string scalarName<Bin50>() { return "bin50"; }
+template <> inline std::string scalarName<Bin100>() { return "bin100"; }
+template <> inline std::string scalarName<Rational>() { return "rational"; }
 template <> inline std::string scalarName<MpfrReal>() {
   return "mpfr:" + std::to_string(mpfrBits());
 }

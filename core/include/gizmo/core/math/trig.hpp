@@ -18,6 +18,7 @@
 #include <cassert>
 #include <limits>
 #include <type_traits>
+#include <vector>
 
 #include <mpfr.h>
 
@@ -33,22 +34,50 @@ inline constexpr double kHalfPiParts[5] = {0x1.921fb54442d18p+0, 0x1.1a62633145c
                                            -0x1.f1976b7ed8fbcp-110, 0x1.4cf98e804177dp-164,
                                            0x1.31d89cd9128a5p-218};
 
+// pi/2 as a sum of doubles from MPFR's correctly rounded pi, for scalars wider than the table
+// above (cpp_bin_float 50 and 100): enough parts to hold `bits` bits. Computed once per width.
+inline std::vector<double> halfPiPartsFromMpfr(long bits) {
+  mpfr_t rest;
+  mpfr_init2(rest, static_cast<mpfr_prec_t>(bits));
+  mpfr_const_pi(rest, MPFR_RNDN);
+  mpfr_div_2ui(rest, rest, 1, MPFR_RNDN);  // exact
+  std::vector<double> parts;
+  for (long covered = 0; covered < bits && mpfr_zero_p(rest) == 0; covered += 53) {
+    const double part = mpfr_get_d(rest, MPFR_RNDN);
+    parts.push_back(part);
+    mpfr_sub_d(rest, rest, part, MPFR_RNDN);  // exact: the part is rest's leading bits
+  }
+  mpfr_clear(rest);
+  return parts;
+}
+
+// hi + lo = the sum of the parts, hi the nearest Real and lo the rest (the parts are each the
+// rounding of what the previous ones leave, so hi is within an ulp of their sum).
+template <class Real>
+inline void sumHalfPiParts(const double* parts, std::size_t count, Real& hi, Real& lo) {
+  Real sum = fromDouble<Real>(parts[0]);
+  for (std::size_t i = 1; i < count; ++i) sum = sum + fromDouble<Real>(parts[i]);
+  hi = sum;
+  Real rest = fromDouble<Real>(parts[0]) - hi;  // exact (Sterbenz)
+  for (std::size_t i = 1; i < count; ++i) rest = rest + fromDouble<Real>(parts[i]);
+  lo = rest;
+}
+
 // hi + lo = pi/2 to about twice Real's precision, hi within an ulp of pi/2.
 template <class Real>
 inline void halfPiSplit(Real& hi, Real& lo) {
-  if constexpr (std::numeric_limits<Real>::digits < 53) {
+  constexpr int digits = std::numeric_limits<Real>::digits;
+  if constexpr (digits < 53) {
     // Narrower than double: do the subtraction in double, where hi and the parts are exact.
     hi = static_cast<Real>(kHalfPiParts[0]);
     double rest = kHalfPiParts[0] - static_cast<double>(hi);  // exact (Sterbenz)
     rest = (rest + kHalfPiParts[1]) + kHalfPiParts[2];
     lo = static_cast<Real>(rest);
+  } else if constexpr (digits <= 113) {
+    sumHalfPiParts(kHalfPiParts, 5, hi, lo);
   } else {
-    Real sum = fromDouble<Real>(kHalfPiParts[0]);
-    for (int i = 1; i < 5; ++i) sum = sum + fromDouble<Real>(kHalfPiParts[i]);
-    hi = sum;
-    Real rest = fromDouble<Real>(kHalfPiParts[0]) - hi;  // exact (Sterbenz)
-    for (int i = 1; i < 5; ++i) rest = rest + fromDouble<Real>(kHalfPiParts[i]);
-    lo = rest;
+    static const std::vector<double> parts = halfPiPartsFromMpfr(2L * digits + 64);
+    sumHalfPiParts(parts.data(), parts.size(), hi, lo);
   }
 }
 
@@ -92,9 +121,14 @@ inline void twoSum(const Real& a, const Real& b, Real& s, Real& e) {
 // 2^ceil(p/2) + 1 for Real's p-bit significand: the constant of Veltkamp's splitting.
 template <class Real>
 inline Real splitterOf() {
-  using std::ldexp;
-  const int half = static_cast<int>((precisionBits<Real>() + 1) / 2);
-  return ldexp(Real(1), half) + Real(1);  // exact
+  // An exact scalar has no rounding error to recover: splitter 0 makes twoProduct's error term 0.
+  if constexpr (kExactScalar<Real>) {
+    return Real(0);
+  } else {
+    using std::ldexp;
+    const int half = static_cast<int>((precisionBits<Real>() + 1) / 2);
+    return ldexp(Real(1), half) + Real(1);  // exact
+  }
 }
 
 // p + e == a * b exactly, p the rounded product (Dekker's product with Veltkamp's splitting,

@@ -1,0 +1,3 @@
+#include "instantiate.hpp"
+
+GIZMO_INSTANTIATE_CORE(Bin100)

@@ -1,0 +1,289 @@
+// certifyRun / certifyLog: the double run re-simulated with an observer that, after each executed
+// event, copies the state in force until the next one; each executed event is then settled by
+// the ladder against the state copied before it. This file runs the core's double code and
+// never computes with intervals (so it is built without -frounding-math and never rounds upward).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "gizmo/core/gizmos/absorber.hpp"
+#include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/core/gizmos/polygonal_gizmo.hpp"
+#include "gizmo/verify/certify.hpp"
+#include "gizmo/verify/certify_ladder.hpp"
+
+namespace gizmo::verify {
+
+using namespace detail;
+
+std::string uncertifiedReasonName(UncertifiedReason r) {
+  switch (r) {
+    case UncertifiedReason::SwingingFlipper: return "swinging flipper";
+    case UncertifiedReason::Undecided: return "undecided";
+  }
+  return "?";
+}
+
+ExactBound exactBound(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%a", v);
+  return ExactBound{v, buf};
+}
+
+std::uint64_t CertifyReport::certified() const {
+  std::uint64_t n = 0;
+  for (std::uint64_t c : certifiedAtRung) n += c;
+  return n;
+}
+
+namespace {
+
+BoardLayout layoutOf(GameBoard<double>& board) {
+  BoardLayout layout;
+  layout.model = board.params().model;
+  layout.ballRadius = kBallRadius;
+  const std::size_t n = board.gizmoCount();
+  layout.ballIndex.assign(n, -1);
+  layout.cells.assign(std::size_t(BoardLayout::kCells * BoardLayout::kCells), {});
+  for (std::size_t id = 0; id < n; ++id) {
+    const AbstractGizmo<double>& g = board.gizmo(GizmoId(id));
+    LayoutGizmo L;
+    L.id = GizmoId(id);
+    L.name = g.name();
+    L.bounds = g.bounds();
+    if (g.asBall()) {
+      L.kind = LayoutKind::Ball;
+      layout.ballIndex[id] = std::int32_t(layout.balls.size());
+      layout.balls.push_back(GizmoId(id));
+    } else if (dynamic_cast<const Flipper<double>*>(&g)) {
+      L.kind = LayoutKind::Flipper;
+    } else if (const auto* shaped = dynamic_cast<const AbstractGizmoWithPolygonalGeometry<double>*>(&g)) {
+      L.shape = shaped->shape();
+      L.kind = LayoutKind::FixedShape;
+      if (g.kind() == GizmoKind::Absorber) {
+        L.kind = LayoutKind::Absorber;
+        const GizmoSpec s = g.spec();
+        L.rect = {double(s.x), double(s.y), double(s.width), double(s.height)};
+      }
+    }
+    if (id != 0 && L.kind != LayoutKind::Ball) {  // the walls are checked against every ball
+      auto cell = [](double v) { return std::clamp(int(std::floor(v)), 0, BoardLayout::kCells - 1); };
+      for (int y = cell(L.bounds.lo.y); y <= cell(L.bounds.hi.y); ++y)
+        for (int x = cell(L.bounds.lo.x); x <= cell(L.bounds.hi.x); ++x)
+          layout.cells[std::size_t(y * BoardLayout::kCells + x)].push_back(GizmoId(id));
+    }
+    layout.gizmos.push_back(std::move(L));
+  }
+  // Each pair's collider as the board fixes it: asked in id order (GameBoard::rebuild).
+  for (GizmoId ball : layout.balls) {
+    std::vector<GizmoId> row(n, kNoGizmo);
+    for (std::size_t g = 0; g < n; ++g) {
+      if (GizmoId(g) == ball) continue;
+      const GizmoId lo = std::min(GizmoId(g), ball), hi = std::max(GizmoId(g), ball);
+      const PairRole r = formPair(board.gizmo(lo), board.gizmo(hi));
+      if (r != PairRole::None) row[g] = r == PairRole::FirstCollides ? lo : hi;
+    }
+    layout.collider.push_back(std::move(row));
+  }
+  return layout;
+}
+
+class CertifyingObserver final : public BoardObserver<double> {
+ public:
+  CertifyingObserver(GameBoard<double>& board, const CertifyOptions& options, CertifyReport& report)
+      : board_(board), options_(options), report_(report), layout_(layoutOf(board)), ladder_(layout_, options) {
+    report_.model = std::string(motionModelName(layout_.model));
+    report_.rungBits.push_back(53);
+    for (long b : options.mpfiBits) report_.rungBits.push_back(b);
+    report_.certifiedAtRung.assign(report_.rungBits.size(), 0);
+  }
+
+  void eventScheduled(const Event<double>& e) override {
+    if (!snapshotTaken_) takeSnapshot();  // the state at the start, before any event
+    live_.push_back(e);
+  }
+  void eventRemoved(const Event<double>& e) override { forget(e); }
+
+  void eventExecuted(const Event<double>& e, const EventOutcome<double>&) override {
+    forget(e);
+    if (options_.maxEvents != 0 && report_.decisions >= options_.maxEvents) return;
+    if (!snapshotTaken_) takeSnapshot();
+    DecisionInput in;
+    in.eventIndex = report_.decisions;
+    in.executed = e;
+    for (const Event<double>& pending : live_) {
+      if (isRootKind(pending.kind)) continue;
+      if (!in.hasNextScheduled || runsBefore(pending, in.nextScheduled)) in.nextScheduled = pending;
+      in.hasNextScheduled = true;
+    }
+    record(ladder_.settle(snapshot_, in), in);
+    ++report_.decisions;
+    takeSnapshot();  // what is in force until the next event
+  }
+
+ private:
+  void takeSnapshot() {
+    snapshotTaken_ = true;
+    BoardSnapshot& s = snapshot_;
+    s.now = board_.now();
+    s.balls.resize(layout_.balls.size());
+    for (std::size_t i = 0; i < layout_.balls.size(); ++i) {
+      const Ball<double>& b = *board_.gizmo(layout_.balls[i]).asBall();
+      BallSnapshot& out = s.balls[i];
+      out.id = b.id();
+      out.captured = b.captured();
+      out.t0 = b.anchorTime();
+      const Trajectory<double> t = b.trajectoryAt(b.anchorTime());  // τ = 0: the anchor, exactly
+      out.p = t.p;
+      out.v = t.v;
+      out.a = t.a;
+      out.contactGizmo = kNoGizmo;
+      out.skippedFeatures.clear();
+      if (const auto& c = b.contact()) {
+        out.contactGizmo = c->gizmo;
+        out.contactA = c->segment.a;
+        out.contactB = c->segment.b;
+        // What shapeTimeOfImpact leaves out for this ball: the segment and the circles capping it.
+        const Shape<double>* shape = shapeOf(c->gizmo);
+        out.skippedFeatures.push_back(c->feature);
+        if (shape && std::size_t(c->feature) < shape->segments.size()) {
+          const SegmentFeature<double>& seg = shape->segments[std::size_t(c->feature)];
+          for (std::size_t k = 0; k < shape->circles.size(); ++k)
+            if (capsEndOf(shape->circles[k], seg)) out.skippedFeatures.push_back(std::int32_t(shape->segments.size() + k));
+        }
+      }
+    }
+    // Overwritten in place: the copies reuse the vectors' storage, so a snapshot allocates
+    // nothing once the run is under way.
+    std::size_t flippers = 0, absorbers = 0;
+    for (const LayoutGizmo& g : layout_.gizmos) {
+      if (g.kind == LayoutKind::Flipper) {
+        const auto& f = static_cast<const Flipper<double>&>(board_.gizmo(g.id));
+        if (s.flippers.size() <= flippers) s.flippers.emplace_back();
+        FlipperSnapshot& fs = s.flippers[flippers++];
+        fs.id = g.id;
+        fs.swinging = f.swinging();
+        if (!fs.swinging) fs.still = f.stillShape();
+      } else if (g.kind == LayoutKind::Absorber) {
+        const auto& a = static_cast<const Absorber<double>&>(board_.gizmo(g.id));
+        if (s.absorbers.size() <= absorbers) s.absorbers.emplace_back();
+        AbsorberSnapshot& as = s.absorbers[absorbers++];
+        as.id = g.id;
+        as.firedInside = a.firedStillInside();
+      }
+    }
+  }
+
+  void forget(const Event<double>& e) {
+    for (std::size_t i = 0; i < live_.size(); ++i)
+      if (live_[i].sequence == e.sequence) {
+        live_[i] = live_.back();
+        live_.pop_back();
+        return;
+      }
+  }
+
+  const Shape<double>* shapeOf(GizmoId id) const {
+    const AbstractGizmo<double>& g = board_.gizmo(id);
+    if (const auto* f = dynamic_cast<const Flipper<double>*>(&g)) return &f->stillShape();
+    if (const auto* p = dynamic_cast<const AbstractGizmoWithPolygonalGeometry<double>*>(&g)) return &p->shape();
+    return nullptr;
+  }
+
+  std::string nameOf(GizmoId id) const {
+    return id >= 0 && std::size_t(id) < layout_.gizmos.size() ? layout_.gizmos[std::size_t(id)].name : "-";
+  }
+
+  EventRef refOf(const EventKey& k) const {
+    EventRef r{k.kind, k.a, k.b, k.feature, std::string(eventKindName(k.kind))};
+    switch (k.kind) {
+      case EventKind::Collision:
+        r.description += " " + nameOf(k.a) + "/" + nameOf(k.b) + " feature " + std::to_string(k.feature);
+        break;
+      case EventKind::Leave: r.description += " " + nameOf(k.b) + " leaves " + nameOf(k.a); break;
+      case EventKind::Input:
+        r.description += " key " + std::to_string(k.feature) + (k.b == int(KeyDirection::Down) ? " down" : " up");
+        break;
+      case EventKind::EndOfTick: break;
+      default: r.description += " " + nameOf(k.a); break;
+    }
+    return r;
+  }
+
+  void record(const LadderResult& result, const DecisionInput& in) {
+    const RungOutcome& o = result.outcome;
+    const EventRef executed = refOf(keyOf(in.executed));
+    const ExactBound time = exactBound(in.executed.time);
+    switch (o.verdict) {
+      case Verdict::Certified: ++report_.certifiedAtRung[std::size_t(result.rung)]; return;
+      case Verdict::Wrong: {
+        WrongDecision w;
+        w.eventIndex = in.eventIndex;
+        w.time = time;
+        w.executed = executed;
+        w.shouldHaveComeFirst = refOf(o.other);
+        if (o.otherIsScheduled) w.shouldHaveComeFirst.description += " at " + exactBound(in.nextScheduled.time).hex;
+        w.byAtLeast = exactBound(o.byLo);
+        w.byAtMost = exactBound(o.byHi);
+        w.explanation = o.explanation;
+        w.rungBits = result.bits;
+        report_.wrong.push_back(std::move(w));
+        return;
+      }
+      case Verdict::SwingingFlipper: uncertified(in, o, executed, time, UncertifiedReason::SwingingFlipper); return;
+      case Verdict::Undecided: break;
+    }
+    // Still overlapping at the top rung: a tie if the window is down at that precision's scale.
+    const double tieScale = std::ldexp(std::max(1.0, std::abs(in.executed.time)), -int(result.bits / 2));
+    if (!(o.window <= tieScale)) {
+      uncertified(in, o, executed, time, UncertifiedReason::Undecided);
+      return;
+    }
+    TieDecision t;
+    t.eventIndex = in.eventIndex;
+    t.time = time;
+    t.executed = executed;
+    t.other = refOf(o.other);
+    t.within = exactBound(o.window);
+    t.orderFollowed = sameEvent(o.other, keyOf(in.executed)) || tieOrderBefore(keyOf(in.executed), o.other);
+    report_.ties.push_back(std::move(t));
+  }
+
+  void uncertified(const DecisionInput& in, const RungOutcome& o, const EventRef& executed, const ExactBound& time,
+                   UncertifiedReason why) {
+    ++report_.uncertifiedByReason[std::size_t(why)];
+    if (report_.uncertified.size() < 100)
+      report_.uncertified.push_back(UncertifiedDecision{in.eventIndex, time, executed, why, refOf(o.other), exactBound(o.window)});
+  }
+
+  GameBoard<double>& board_;
+  const CertifyOptions& options_;
+  CertifyReport& report_;
+  BoardLayout layout_;
+  Ladder ladder_;
+  // The queue's live events (a handful: a vector searched by sequence number is cheapest).
+  std::vector<Event<double>> live_;
+  BoardSnapshot snapshot_;
+  bool snapshotTaken_ = false;
+};
+
+}  // namespace
+
+CertifyReport certifyRun(const RunRequest& request, const CertifyOptions& options) {
+  CertifyReport report;
+  std::unique_ptr<GameBoard<double>> board = prepareRun<double>(request);
+  CertifyingObserver observer(*board, options, report);
+  board->setObserver(&observer);
+  if (options.maxEvents != 0) board->setRunLimit({options.maxEvents, std::nullopt});
+  continueRun(*board, request, 0);
+  return report;
+}
+
+CertifyReport certifyLog(const replay::OpenedLog& log, const CertifyOptions& options) {
+  if (log.precision.kind != Precision::Double)
+    throw CertifyError("certified decisions need a log of a double run; this log was recorded in " +
+                       precisionName(log.precision));
+  return certifyRun(log.request, options);
+}
+
+}  // namespace gizmo::verify

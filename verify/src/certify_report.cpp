@@ -1,0 +1,83 @@
+// The certification report as text (for people) and as JSON (for tools). Times are printed
+// exactly as hex floats, with the decimal value beside them.
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+#include <nlohmann/json.hpp>
+
+#include "gizmo/verify/certify.hpp"
+
+namespace gizmo::verify {
+
+namespace {
+
+std::string both(const ExactBound& b) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.17g", b.value);
+  return b.hex + " (" + buf + ")";
+}
+
+nlohmann::json boundJson(const ExactBound& b) {
+  return nlohmann::json{{"hex", b.hex}, {"value", std::isfinite(b.value) ? nlohmann::json(b.value) : nlohmann::json(b.hex)}};
+}
+
+nlohmann::json eventJson(const EventRef& e) {
+  return nlohmann::json{{"kind", std::string(eventKindName(e.kind))}, {"a", e.a}, {"b", e.b},
+                        {"feature", e.feature}, {"description", e.description}};
+}
+
+std::string rungName(long bits) { return bits == 53 ? "double intervals" : "mpfi:" + std::to_string(bits); }
+
+}  // namespace
+
+void printCertifyReport(std::ostream& out, const CertifyReport& r) {
+  out << "certified decisions (" << r.model << "): " << r.certified() << " of " << r.decisions << "\n";
+  for (std::size_t i = 0; i < r.rungBits.size(); ++i)
+    out << "  certified with " << rungName(r.rungBits[i]) << ": " << r.certifiedAtRung[i] << "\n";
+  for (int k = 0; k < kUncertifiedReasonCount; ++k)
+    out << "  not certified, " << uncertifiedReasonName(UncertifiedReason(k)) << ": " << r.uncertifiedByReason[std::size_t(k)]
+        << "\n";
+  std::size_t tieOrderBroken = 0;
+  for (const TieDecision& t : r.ties) tieOrderBroken += t.orderFollowed ? 0 : 1;
+  out << "  ties: " << r.ties.size() << " (tie order not followed: " << tieOrderBroken << ")\n";
+  out << "  wrong decisions: " << r.wrong.size() << "\n";
+  for (const TieDecision& t : r.ties)
+    out << "tie at event " << t.eventIndex << ", t = " << both(t.time) << ": " << t.executed.description << " and "
+        << t.other.description << " within " << both(t.within) << "; "
+        << (t.orderFollowed ? "documented tie order followed" : "documented tie order NOT followed") << "\n";
+  for (const WrongDecision& w : r.wrong)
+    out << "wrong decision at event " << w.eventIndex << ", t = " << both(w.time) << ": ran " << w.executed.description
+        << ", but " << w.shouldHaveComeFirst.description << " should have come first, by at least "
+        << both(w.byAtLeast) << " and at most " << both(w.byAtMost) << " s [" << w.explanation << "; proven with "
+        << rungName(w.rungBits) << "]\n";
+}
+
+std::string certifyReportJson(const CertifyReport& r) {
+  nlohmann::json j;
+  j["model"] = r.model;
+  j["decisions"] = r.decisions;
+  j["certified"] = r.certified();
+  nlohmann::json rungs = nlohmann::json::array();
+  for (std::size_t i = 0; i < r.rungBits.size(); ++i)
+    rungs.push_back({{"rung", rungName(r.rungBits[i])}, {"bits", r.rungBits[i]}, {"certified", r.certifiedAtRung[i]}});
+  j["rungs"] = rungs;
+  nlohmann::json reasons = nlohmann::json::object();
+  for (int k = 0; k < kUncertifiedReasonCount; ++k)
+    reasons[uncertifiedReasonName(UncertifiedReason(k))] = r.uncertifiedByReason[std::size_t(k)];
+  j["notCertified"] = reasons;
+  nlohmann::json ties = nlohmann::json::array();
+  for (const TieDecision& t : r.ties)
+    ties.push_back({{"event", t.eventIndex}, {"time", boundJson(t.time)}, {"executed", eventJson(t.executed)},
+                    {"other", eventJson(t.other)}, {"within", boundJson(t.within)}, {"orderFollowed", t.orderFollowed}});
+  j["ties"] = ties;
+  nlohmann::json wrong = nlohmann::json::array();
+  for (const WrongDecision& w : r.wrong)
+    wrong.push_back({{"event", w.eventIndex}, {"time", boundJson(w.time)}, {"executed", eventJson(w.executed)},
+                     {"shouldHaveComeFirst", eventJson(w.shouldHaveComeFirst)}, {"byAtLeast", boundJson(w.byAtLeast)},
+                     {"byAtMost", boundJson(w.byAtMost)}, {"explanation", w.explanation}, {"provenWithBits", w.rungBits}});
+  j["wrong"] = wrong;
+  return j.dump(2);
+}
+
+}  // namespace gizmo::verify

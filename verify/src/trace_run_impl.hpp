@@ -1,0 +1,153 @@
+#pragma once
+// traceRun and timeRun for one scalar; included by the trace_run_*.cpp files only.
+#include <chrono>
+#include <cstdio>
+#include <exception>
+
+#include "trace.hpp"
+
+namespace gizmo::verify {
+
+namespace detail {
+
+template <class Real>
+class TraceObserver final : public BoardObserver<Real> {
+ public:
+  TraceObserver(GameBoard<Real>& board, const Trace* reference, Trace* record)
+      : board_(board), reference_(reference), record_(record) {}
+
+  void eventExecuted(const Event<Real>& e, const EventOutcome<Real>& outcome) override {
+    // A recalculation changes nothing on the board, it only predicts again; and where it falls
+    // on a tick boundary exactly, rounding puts it before or after the tick at random. The
+    // ladder compares the events that change the board.
+    if (e.kind == EventKind::Recalculate) return;
+    ++compared_;
+    TracePoint p;
+    p.kind = e.kind;
+    p.a = e.a;
+    p.b = e.b;
+    p.feature = e.feature;
+    p.time = WideValue::of(e.time);
+    for (const BallChange<Real>& c : outcome.balls()) {
+      p.ball[p.ballCount] = c.ball;
+      p.x[p.ballCount] = WideValue::of(c.position.x);
+      p.y[p.ballCount] = WideValue::of(c.position.y);
+      ++p.ballCount;
+    }
+    p.energy = WideValue::of(board_.energy());
+    if (record_ != nullptr) record_->push_back(p);
+    if (reference_ != nullptr) compare(p);
+  }
+
+  // Called when the run has ended: a run that made fewer or more events than the reference
+  // parts from it where the shorter one ended.
+  void finish(const Real& endTime) {
+    if (reference_ == nullptr || parted_) return;
+    if (agreement_.events < reference_->size()) {
+      const TracePoint& r = reference_->at(agreement_.events);
+      part(r.time.toDouble(), "the reference goes on with " + describe(r) + "; this run has ended");
+    } else {
+      agreement_.throughout = true;
+      agreement_.time = toDouble(endTime);
+    }
+  }
+  const Agreement& agreement() const { return agreement_; }
+  std::uint64_t compared() const { return compared_; }
+
+ private:
+  void compare(const TracePoint& p) {
+    if (parted_) return;
+    if (agreement_.events >= reference_->size()) {  // the reference ended here
+      part(p.time.toDouble(), "this run goes on with " + describe(p) + "; the reference has ended");
+      return;
+    }
+    const TracePoint& r = (*reference_)[agreement_.events];
+    const bool same = p.kind == r.kind && p.a == r.a && p.b == r.b && p.feature == r.feature &&
+                      p.ballCount == r.ballCount && p.ball == r.ball;
+    if (!same) {
+      part(r.time.toDouble(), "the reference: " + describe(r) + "; this run: " + describe(p));
+      return;
+    }
+    agreement_.maxTimeError = std::max(agreement_.maxTimeError, distance(p.time, r.time));
+    for (std::uint8_t i = 0; i < p.ballCount; ++i)
+      agreement_.maxPositionError = std::max(agreement_.maxPositionError, distance(p.x[i], p.y[i], r.x[i], r.y[i]));
+    const double energyScale = std::fabs(r.energy.toDouble());
+    const double energyError = distance(p.energy, r.energy);
+    agreement_.energyDrift = energyScale > 0 ? energyError / energyScale : energyError;
+    ++agreement_.events;
+  }
+  std::string describe(const TracePoint& p) const {
+    auto name = [&](GizmoId id) { return id >= 0 && std::size_t(id) < board_.gizmoCount() ? board_.gizmo(id).name() : std::string("-"); };
+    char time[32];
+    std::snprintf(time, sizeof time, "%.17g", p.time.toDouble());
+    std::string text = std::string(eventKindName(p.kind)) + " at " + time;
+    if (p.kind == EventKind::Input) return text + " (key " + std::to_string(p.feature) + ")";
+    if (p.a != kNoGizmo) text += " " + name(p.a);
+    if (p.b != kNoGizmo) text += " with " + name(p.b);
+    if (p.kind == EventKind::Collision) text += " feature " + std::to_string(p.feature);
+    return text;
+  }
+  void part(double time, std::string difference) {
+    parted_ = true;
+    agreement_.time = time;
+    agreement_.difference = std::move(difference);
+    // Nothing after the first difference is compared: stop the run at the next event.
+    board_.setRunLimit(typename GameBoard<Real>::RunLimit{board_.executedTotal(), std::nullopt});
+  }
+
+  GameBoard<Real>& board_;
+  const Trace* reference_;
+  Trace* record_;
+  Agreement agreement_;
+  std::uint64_t compared_ = 0;
+  bool parted_ = false;
+};
+
+}  // namespace detail
+
+template <class Real>
+TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* record) {
+  TracedRun result;
+  std::unique_ptr<GameBoard<Real>> board;
+  try {
+    board = prepareRun<Real>(request);
+  } catch (const IrrationalValue& e) {
+    result.stopped = std::string("needs an irrational value before the first event: ") + e.what();
+    return result;
+  }
+  detail::TraceObserver<Real> observer(*board, reference, record);
+  board->setObserver(&observer);
+  try {
+    continueRun(*board, request, 0);
+  } catch (const IrrationalValue& e) {
+    result.stopped = "needs an irrational value after " + std::to_string(board->executedTotal()) + " events: " + e.what();
+  } catch (const std::exception& e) {
+    result.stopped = std::string("the run failed: ") + e.what();
+  }
+  observer.finish(board->now());
+  result.events = board->executedTotal();
+  result.compared = observer.compared();
+  result.endTime = toDouble(board->now());
+  result.agreement = observer.agreement();
+  return result;
+}
+
+template <class Real>
+double timeRun(const RunRequest& request, std::uint64_t& events) {
+  const auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<GameBoard<Real>> board;
+  try {
+    board = prepareRun<Real>(request);
+    continueRun(*board, request, 0);
+  } catch (const std::exception&) {
+    // The traced run reports why; the time is that of the part that ran.
+  }
+  events = board ? board->executedTotal() : 0;
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+#define GIZMO_INSTANTIATE_TRACE_RUN(Real)                                                          \
+  template TracedRun traceRun<Real>(const RunRequest&, const Trace*, Trace*);                      \
+  template double timeRun<Real>(const RunRequest&, std::uint64_t&);
+
+}  // namespace gizmo::verify

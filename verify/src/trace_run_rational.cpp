@@ -1,0 +1,5 @@
+#include "trace_run_impl.hpp"
+
+namespace gizmo::verify {
+GIZMO_INSTANTIATE_TRACE_RUN(Rational)
+}
