@@ -18,12 +18,12 @@ std::string both(const ExactBound& b) {
   return b.hex + " (" + buf + ")";
 }
 
-nlohmann::json boundJson(const ExactBound& b) {
-  return nlohmann::json{{"hex", b.hex}, {"value", std::isfinite(b.value) ? nlohmann::json(b.value) : nlohmann::json(b.hex)}};
+nlohmann::ordered_json boundJson(const ExactBound& b) {
+  return nlohmann::ordered_json{{"hex", b.hex}, {"value", std::isfinite(b.value) ? nlohmann::ordered_json(b.value) : nlohmann::ordered_json(b.hex)}};
 }
 
-nlohmann::json eventJson(const EventRef& e) {
-  return nlohmann::json{{"kind", std::string(eventKindName(e.kind))}, {"a", e.a}, {"b", e.b},
+nlohmann::ordered_json eventJson(const EventRef& e) {
+  return nlohmann::ordered_json{{"kind", std::string(eventKindName(e.kind))}, {"a", e.a}, {"b", e.b},
                         {"feature", e.feature}, {"description", e.description}};
 }
 
@@ -53,29 +53,38 @@ void printCertifyReport(std::ostream& out, const CertifyReport& r) {
         << rungName(w.rungBits) << "]\n";
 }
 
+namespace {
+// "swinging flipper" → "swinging_flipper": JSON keys in one style throughout.
+std::string jsonKey(std::string name) {
+  for (char& c : name)
+    if (c == ' ') c = '_';
+  return name;
+}
+}  // namespace
+
 std::string certifyReportJson(const CertifyReport& r) {
-  nlohmann::json j;
+  nlohmann::ordered_json j;
   j["model"] = r.model;
   j["decisions"] = r.decisions;
   j["certified"] = r.certified();
-  nlohmann::json rungs = nlohmann::json::array();
+  nlohmann::ordered_json rungs = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < r.rungBits.size(); ++i)
     rungs.push_back({{"rung", rungName(r.rungBits[i])}, {"bits", r.rungBits[i]}, {"certified", r.certifiedAtRung[i]}});
   j["rungs"] = rungs;
-  nlohmann::json reasons = nlohmann::json::object();
+  nlohmann::ordered_json reasons = nlohmann::ordered_json::object();
   for (int k = 0; k < kUncertifiedReasonCount; ++k)
-    reasons[uncertifiedReasonName(UncertifiedReason(k))] = r.uncertifiedByReason[std::size_t(k)];
-  j["notCertified"] = reasons;
-  nlohmann::json ties = nlohmann::json::array();
+    reasons[jsonKey(uncertifiedReasonName(UncertifiedReason(k)))] = r.uncertifiedByReason[std::size_t(k)];
+  j["not_certified"] = reasons;
+  nlohmann::ordered_json ties = nlohmann::ordered_json::array();
   for (const TieDecision& t : r.ties)
     ties.push_back({{"event", t.eventIndex}, {"time", boundJson(t.time)}, {"executed", eventJson(t.executed)},
-                    {"other", eventJson(t.other)}, {"within", boundJson(t.within)}, {"orderFollowed", t.orderFollowed}});
+                    {"other", eventJson(t.other)}, {"within", boundJson(t.within)}, {"order_followed", t.orderFollowed}});
   j["ties"] = ties;
-  nlohmann::json wrong = nlohmann::json::array();
+  nlohmann::ordered_json wrong = nlohmann::ordered_json::array();
   for (const WrongDecision& w : r.wrong)
     wrong.push_back({{"event", w.eventIndex}, {"time", boundJson(w.time)}, {"executed", eventJson(w.executed)},
-                     {"shouldHaveComeFirst", eventJson(w.shouldHaveComeFirst)}, {"byAtLeast", boundJson(w.byAtLeast)},
-                     {"byAtMost", boundJson(w.byAtMost)}, {"explanation", w.explanation}, {"provenWithBits", w.rungBits}});
+                     {"should_have_come_first", eventJson(w.shouldHaveComeFirst)}, {"by_at_least", boundJson(w.byAtLeast)},
+                     {"by_at_most", boundJson(w.byAtMost)}, {"explanation", w.explanation}, {"proven_with_bits", w.rungBits}});
   j["wrong"] = wrong;
   return j.dump(2);
 }
