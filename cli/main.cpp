@@ -7,6 +7,7 @@
 #include "log_commands.hpp"
 #include "run_command.hpp"
 #include "verify_command.hpp"
+#include "crosscheck_command.hpp"
 
 int main(int argc, char** argv) {
   using namespace gizmo::cli;
@@ -72,14 +73,37 @@ int main(int argc, char** argv) {
                             gizmo::kPrecisionNames);
   verifyCmd->add_option("--reference", verify.reference, "The run to compare with (default: rational where the scene "
                                                          "allows, else mpfr:256)");
+  verifyCmd->add_option("--exact-digits", verify.exactDigits,
+                        "Stop an exact (rational) run once its board time has this many digits")
+      ->capture_default_str()
+      ->check(CLI::Range(std::size_t(100), std::size_t(100000000)));
   CLI::Option* certify = verifyCmd->add_flag(
       "--certify", verify.certify,
       "Check a recorded double run (give its log instead of a board) decision by decision with interval arithmetic;\n"
       "exit 1 when a decision is proven wrong");
-  for (const char* runOnly : {"--time", "--model", "--max-tick", "--keys", "--precisions", "--reference"})
+  for (const char* runOnly : {"--time", "--model", "--max-tick", "--keys", "--precisions", "--reference", "--exact-digits"})
     certify->excludes(verifyCmd->get_option(runOnly));
   verifyCmd->add_flag("--json", verify.run.json, "Print one JSON object");
   verifyCmd->callback([&] { code = verifyCommand(verify); });
+
+  CrosscheckCommandOptions crosscheck;
+  CLI::App* crosscheckCmd = app.add_subcommand(
+      "crosscheck", "Run a board in our simulator and in Box2D at each step size and match their collisions: what\n"
+                    "agreed and how closely, what either side missed, trajectory and energy divergence, cost.\n"
+                    "With --toi-sweeps N: our times of impact against b2TimeOfImpact on N random sweeps per feature kind.\n"
+                    "Example: gizmo crosscheck fixtures/boards/box2d/speed-cap.txt --time 2 --dt 1/60,1/240 --json");
+  addRunOptions(*crosscheckCmd, crosscheck.run, false);
+  crosscheckCmd->add_option("--dt", crosscheck.steps, "Box2D step sizes, seconds, comma-separated (a number or 1/N)")
+      ->capture_default_str();
+  crosscheckCmd->add_flag("--no-bullet", crosscheck.noBullet, "Balls are not bullets (Box2D may let two fast balls pass)");
+  crosscheckCmd->add_option("--restitution-threshold", crosscheck.restitutionThreshold,
+                            "Box2D's restitution threshold, m/s (its default is 1: slower hits do not bounce)")
+      ->capture_default_str();
+  crosscheckCmd->add_option("--toi-sweeps", crosscheck.toiSweeps,
+                            "Compare times of impact on this many seeded random sweeps per feature kind instead");
+  crosscheckCmd->add_option("--seed", crosscheck.seed, "The sweeps' seed")->capture_default_str();
+  crosscheckCmd->add_flag("--json", crosscheck.run.json, "Print one JSON object");
+  crosscheckCmd->callback([&] { code = crosscheckCommand(crosscheck); });
 
   try {
     app.parse(argc, argv);

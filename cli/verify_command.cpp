@@ -45,6 +45,14 @@ void printHuman(const std::string& board, const VerifyOptions& o, const verify::
   std::printf("exact      %s: %s\n", r.scene.rationalPossible ? "possible" : "not possible", r.scene.reason.c_str());
   std::printf("reference  %s\n", r.reference.c_str());
   for (const std::string& n : r.notes) std::printf("note       %s\n", n.c_str());
+  if (r.certified) {
+    const verify::CertifiedSummary& c = *r.certified;
+    std::printf("certified  the double run's decisions: %llu of %llu certified, %llu not certified, %llu ties, %llu wrong\n",
+                static_cast<unsigned long long>(c.certified), static_cast<unsigned long long>(c.decisions),
+                static_cast<unsigned long long>(c.notCertified), static_cast<unsigned long long>(c.ties),
+                static_cast<unsigned long long>(c.wrong));
+    if (!c.firstWrong.empty()) std::printf("           first: %s\n", c.firstWrong.c_str());
+  }
   std::printf("\n%-12s %9s %9s %12s %10s %10s %10s %9s %11s %9s\n", "precision", "compared", "horizon", "horizon t/s",
               "max dt", "max dpos", "energy", "wall s", "events/s", "x double");
   for (const verify::PrecisionResult& p : r.results) {
@@ -55,6 +63,12 @@ void printHuman(const std::string& board, const VerifyOptions& o, const verify::
     if (!p.difference.empty()) std::printf("  first difference: %s\n", p.difference.c_str());
     if (!p.stopped.empty()) std::printf("  stopped: %s\n", p.stopped.c_str());
   }
+}
+
+nlohmann::ordered_json certifiedJson(const std::optional<verify::CertifiedSummary>& c) {
+  if (!c) return nullptr;
+  return {{"decisions", c->decisions}, {"certified", c->certified}, {"not_certified", c->notCertified},
+          {"ties", c->ties}, {"wrong", c->wrong}, {"first_wrong", c->firstWrong}};
 }
 
 void printJson(const std::string& board, const VerifyOptions& o, const verify::LadderReport& r) {
@@ -85,6 +99,7 @@ void printJson(const std::string& board, const VerifyOptions& o, const verify::L
                              {"exact_possible", r.scene.rationalPossible},
                              {"exact_reason", r.scene.reason},
                              {"notes", r.notes},
+                             {"certified", certifiedJson(r.certified)},
                              {"precisions", precisions}};
   std::cout << out.dump(2) << '\n';
 }
@@ -130,6 +145,7 @@ int verifyCommand(const VerifyOptions& o) {
   if (!checkRun(o.run, "verify", run, code)) return code;
   verify::LadderOptions options;
   options.request = run.request;
+  options.exactDigits = o.exactDigits;
   if (o.precisions.empty()) {
     options.precisions = verify::defaultLadder(run.request);
   } else if (!parseList(o.precisions, options.precisions)) {

@@ -38,3 +38,8 @@ if(NOT TARGET gizmo_mpfi)
     INTERFACE_INCLUDE_DIRECTORIES "${GIZMO_MPFI_INCLUDE_DIR}"
     INTERFACE_LINK_LIBRARIES "${GIZMO_MPFI_LIBRARY};PkgConfig::MPFR;PkgConfig::GMP")
 endif()
+# The Box2D bridge of gizmo::verify (docs/verification.md, "Cross-checking against Box2D").
+find_package(box2d REQUIRED)
+if(GIZMO_BUILD_TESTS)
+  find_package(rapidcheck REQUIRED)  # targets rapidcheck and rapidcheck_gtest, no namespace
+endif()

@@ -45,6 +45,7 @@
 #include "gizmo/replay/log_header.hpp"
 #include "gizmo/replay/replay.hpp"
 #include "gizmo/replay/scalar_codec.hpp"
+#include "support/fixture_request.hpp"
 
 namespace {
 
@@ -66,10 +67,7 @@ std::vector<TimedKey> flipperKeys() {
 }
 
 RunRequest requestFor(const std::string& board, MotionModel model, double seconds, bool keys = true) {
-  RunRequest r;
-  r.board = io::readBoardFile(fixture(board)).board;
-  r.model = model;
-  r.duration = seconds;
+  RunRequest r = test::fixtureRequest(board, model, seconds);
   if (keys) r.keys = flipperKeys();
   return r;
 }

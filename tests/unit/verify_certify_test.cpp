@@ -9,17 +9,14 @@
 
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/io/board_file.hpp"
+#include "support/fixture_request.hpp"
 #include "gizmo/verify/certify.hpp"
 
 namespace gizmo::verify {
 namespace {
 
 RunRequest requestFor(const std::string& board, MotionModel model, double seconds) {
-  RunRequest r;
-  r.board = io::readBoardFile(std::string(GIZMO_FIXTURES_DIR) + "/" + board).board;
-  r.model = model;
-  r.duration = seconds;
-  return r;
+  return test::fixtureRequest(board, model, seconds);
 }
 
 std::string describe(const CertifyReport& r) {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "gizmo/io/board_file.hpp"
+#include "support/fixture_request.hpp"
 #include "gizmo/verify/ladder.hpp"
 #include "gizmo/verify/wide_value.hpp"
 
@@ -13,11 +14,7 @@ namespace gizmo::verify {
 namespace {
 
 RunRequest requestFor(const std::string& board, MotionModel model, double seconds) {
-  RunRequest r;
-  r.board = io::readBoardFile(std::string(GIZMO_FIXTURES_DIR) + "/boards/" + board).board;
-  r.model = model;
-  r.duration = seconds;
-  return r;
+  return test::fixtureRequest("boards/" + board, model, seconds);
 }
 
 std::vector<PrecisionChoice> ladderOf(std::initializer_list<const char*> names) {
@@ -69,6 +66,7 @@ TEST(Ladder, RationalSceneMatchesMpfrToItsPrecision) {
   const LadderReport report = runLadder(o);
   EXPECT_EQ(report.reference, "rational");
   EXPECT_TRUE(report.notes.empty());
+  EXPECT_FALSE(report.certified);  // exact throughout: nothing left to certify
   const PrecisionResult& exact = row(report, "rational");
   EXPECT_TRUE(exact.reference);
   EXPECT_TRUE(exact.stopped.empty()) << exact.stopped;
@@ -114,6 +112,22 @@ TEST(Ladder, RationalRunSaysWhereItNeedsAnIrrationalValue) {
   EXPECT_GT(row(report, "mpfr:256").compared, exact.compared);
 }
 
+// An exact run whose numbers outgrow the budget stops there and says so; the reference falls
+// back to MPFR, which the exact run matched up to that point.
+TEST(Ladder, ExactRunStopsAtItsDigitBudget) {
+  LadderOptions o;
+  o.request = requestFor("verify/rational-squares.txt", MotionModel::Classic, 3.0);
+  o.precisions = ladderOf({"rational"});
+  o.exactDigits = 1000;
+  const LadderReport report = runLadder(o);
+  EXPECT_EQ(report.reference, "mpfr:256");
+  const PrecisionResult& exact = row(report, "rational");
+  EXPECT_NE(exact.stopped.find("beyond the budget of 1000"), std::string::npos) << exact.stopped;
+  EXPECT_GT(exact.compared, 5u);
+  EXPECT_EQ(exact.horizonEvents, exact.compared);
+  EXPECT_LT(exact.maxPositionError, 1e-72);
+}
+
 // A chaotic field: each extra bit keeps the run on the reference's path a little longer.
 TEST(Ladder, AgreementHorizonGrowsWithPrecisionOnAChaoticBoard) {
   LadderOptions o;
@@ -131,6 +145,21 @@ TEST(Ladder, AgreementHorizonGrowsWithPrecisionOnAChaoticBoard) {
   EXPECT_GE(row(report, "bin100").horizonEvents, previous);
   // Before its horizon a run's errors stay small compared to the board: the decisions agree.
   EXPECT_LT(row(report, "double").maxPositionError, 1.0);
+}
+
+// Where exact arithmetic is out of reach the check goes on with certified arithmetic: the double
+// run's decisions are certified, and a board built so that double takes the wrong one of two
+// collisions 4.6e-16 s apart shows it.
+TEST(Ladder, CertifiesTheDoubleRunWhereTheSceneCannotBeExact) {
+  LadderOptions o;
+  o.request = requestFor("verify/near-tie-corner.txt", MotionModel::Ballistic, 2.5);
+  o.precisions = ladderOf({"double"});
+  const LadderReport report = runLadder(o);
+  ASSERT_TRUE(report.certified);
+  EXPECT_EQ(report.certified->wrong, 1u);
+  EXPECT_EQ(report.certified->certified + report.certified->notCertified + report.certified->ties + 1,
+            report.certified->decisions);
+  EXPECT_NE(report.certified->firstWrong.find("should have come first"), std::string::npos);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ostream>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -46,11 +47,16 @@ void printCertifyReport(std::ostream& out, const CertifyReport& r) {
     out << "tie at event " << t.eventIndex << ", t = " << both(t.time) << ": " << t.executed.description << " and "
         << t.other.description << " within " << both(t.within) << "; "
         << (t.orderFollowed ? "documented tie order followed" : "documented tie order NOT followed") << "\n";
-  for (const WrongDecision& w : r.wrong)
-    out << "wrong decision at event " << w.eventIndex << ", t = " << both(w.time) << ": ran " << w.executed.description
-        << ", but " << w.shouldHaveComeFirst.description << " should have come first, by at least "
-        << both(w.byAtLeast) << " and at most " << both(w.byAtMost) << " s [" << w.explanation << "; proven with "
-        << rungName(w.rungBits) << "]\n";
+  for (const WrongDecision& w : r.wrong) out << wrongDecisionLine(w) << "\n";
+}
+
+std::string wrongDecisionLine(const WrongDecision& w) {
+  std::ostringstream out;
+  out << "wrong decision at event " << w.eventIndex << ", t = " << both(w.time) << ": ran " << w.executed.description
+      << ", but " << w.shouldHaveComeFirst.description << " should have come first, by at least "
+      << both(w.byAtLeast) << " and at most " << both(w.byAtMost) << " s [" << w.explanation << "; proven with "
+      << rungName(w.rungBits) << "]";
+  return out.str();
 }
 
 namespace {

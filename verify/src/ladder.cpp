@@ -1,7 +1,9 @@
 #include "gizmo/verify/ladder.hpp"
 
 #include <algorithm>
+#include <limits>
 
+#include "gizmo/verify/certify.hpp"
 #include "trace.hpp"
 
 namespace gizmo::verify {
@@ -38,12 +40,14 @@ std::vector<PrecisionChoice> defaultLadder(const RunRequest& request) {
 
 namespace {
 
-TracedRun traceAt(const PrecisionChoice& p, const RunRequest& request, const Trace* reference, Trace* record) {
-  return withPrecision(p, [&]<class Real>() { return traceRun<Real>(request, reference, record); });
+TracedRun traceAt(const PrecisionChoice& p, const LadderOptions& o, const Trace* reference, Trace* record) {
+  return withPrecision(p, [&]<class Real>() { return traceRun<Real>(o.request, reference, record, o.exactDigits); });
 }
 
-double timeAt(const PrecisionChoice& p, const RunRequest& request, std::uint64_t& events) {
-  return withPrecision(p, [&]<class Real>() { return timeRun<Real>(request, events); });
+// The cost of a run over as many events as its traced run made (an exact run that outgrew its
+// budget is timed to the same point).
+double timeAt(const PrecisionChoice& p, const RunRequest& request, std::uint64_t maxEvents, std::uint64_t& events) {
+  return withPrecision(p, [&]<class Real>() { return timeRun<Real>(request, maxEvents, events); });
 }
 
 bool samePrecision(const PrecisionChoice& a, const PrecisionChoice& b) { return precisionName(a) == precisionName(b); }
@@ -60,19 +64,31 @@ LadderReport runLadder(const LadderOptions& options) {
   PrecisionChoice reference = options.reference.value_or(report.scene.rationalPossible ? *parsePrecision("rational")
                                                                                         : mpfr256);
   Trace trace;
-  TracedRun referenceRun = traceAt(reference, options.request, nullptr, &trace);
+  TracedRun referenceRun = traceAt(reference, options, nullptr, &trace);
   if (!referenceRun.stopped.empty() && !options.reference && reference.kind == Precision::Rational) {
     report.notes.push_back("the rational run " + referenceRun.stopped + "; the reference is mpfr:256 instead");
     reference = mpfr256;
     trace.clear();
-    referenceRun = traceAt(reference, options.request, nullptr, &trace);
+    referenceRun = traceAt(reference, options, nullptr, &trace);
   }
   if (!referenceRun.stopped.empty())
     report.notes.push_back("the reference run (" + precisionName(reference) + ") stopped early: " + referenceRun.stopped);
   report.reference = precisionName(reference);
+  if (options.certifyWhereInexact && reference.kind != Precision::Rational) {
+    const CertifyReport c = certifyRun(options.request);
+    CertifiedSummary summary;
+    summary.decisions = c.decisions;
+    summary.certified = c.certified();
+    for (std::uint64_t n : c.uncertifiedByReason) summary.notCertified += n;
+    summary.ties = c.ties.size();
+    summary.wrong = c.wrong.size();
+    if (!c.wrong.empty()) summary.firstWrong = wrongDecisionLine(c.wrong.front());
+    report.certified = summary;
+  }
 
   std::uint64_t doubleEvents = 0;
-  const double doubleSeconds = timeAt(*parsePrecision("double"), options.request, doubleEvents);
+  const double doubleSeconds =
+      timeAt(*parsePrecision("double"), options.request, std::numeric_limits<std::uint64_t>::max(), doubleEvents);
   for (const PrecisionChoice& p : options.precisions) {
     PrecisionResult r;
     r.precision = precisionName(p);
@@ -85,7 +101,7 @@ LadderReport runLadder(const LadderOptions& options) {
       run.agreement.time = run.endTime;
       run.agreement.throughout = true;
     } else {
-      run = traceAt(p, options.request, &trace, nullptr);
+      run = traceAt(p, options, &trace, nullptr);
     }
     r.stopped = run.stopped;
     r.compared = run.compared;
@@ -96,7 +112,8 @@ LadderReport runLadder(const LadderOptions& options) {
     r.maxTimeError = run.agreement.maxTimeError;
     r.maxPositionError = run.agreement.maxPositionError;
     r.energyDrift = run.agreement.energyDrift;
-    r.wallSeconds = timeAt(p, options.request, r.events);
+    const bool exact = p.kind == Precision::Rational;
+    r.wallSeconds = timeAt(p, options.request, exact ? run.events : std::numeric_limits<std::uint64_t>::max(), r.events);
     r.endTime = run.endTime;
     r.eventsPerSecond = r.wallSeconds > 0 ? double(r.events) / r.wallSeconds : 0;
     r.costRatio = doubleSeconds > 0 ? r.wallSeconds / doubleSeconds : 0;

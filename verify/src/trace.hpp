@@ -47,11 +47,15 @@ struct TracedRun {
 // Runs request at Real (for MPFR: at the thread's current precision). Appends every executed
 // event to *record when record is given; compares with *reference when it is given, and then
 // stops at the first difference.
+// An exact run stops (`stopped` says so) once the board time's numerator and denominator
+// together have more than exactDigits decimal digits: every event makes them longer, and the
+// cost of each operation grows with them.
 template <class Real>
-TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* record);
+TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* record, std::size_t exactDigits);
 
-// Wall seconds of the same run without any observer: the cost of the scalar itself.
+// Wall seconds of the same run without any observer, over at most maxEvents events: the cost of
+// the scalar itself.
 template <class Real>
-double timeRun(const RunRequest& request, std::uint64_t& events);
+double timeRun(const RunRequest& request, std::uint64_t maxEvents, std::uint64_t& events);
 
 }  // namespace gizmo::verify

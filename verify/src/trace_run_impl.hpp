@@ -13,13 +13,14 @@ namespace detail {
 template <class Real>
 class TraceObserver final : public BoardObserver<Real> {
  public:
-  TraceObserver(GameBoard<Real>& board, const Trace* reference, Trace* record)
-      : board_(board), reference_(reference), record_(record) {}
+  TraceObserver(GameBoard<Real>& board, const Trace* reference, Trace* record, std::size_t exactDigits)
+      : board_(board), reference_(reference), record_(record), exactDigits_(exactDigits) {}
 
   void eventExecuted(const Event<Real>& e, const EventOutcome<Real>& outcome) override {
     // A recalculation changes nothing on the board, it only predicts again; and where it falls
     // on a tick boundary exactly, rounding puts it before or after the tick at random. The
     // ladder compares the events that change the board.
+    if constexpr (kExactScalar<Real>) checkDigits(e.time);
     if (e.kind == EventKind::Recalculate) return;
     ++compared_;
     TracePoint p;
@@ -52,6 +53,7 @@ class TraceObserver final : public BoardObserver<Real> {
     }
   }
   const Agreement& agreement() const { return agreement_; }
+  const std::string& outgrown() const { return outgrown_; }
   std::uint64_t compared() const { return compared_; }
 
  private:
@@ -76,6 +78,15 @@ class TraceObserver final : public BoardObserver<Real> {
     agreement_.energyDrift = energyScale > 0 ? energyError / energyScale : energyError;
     ++agreement_.events;
   }
+  void checkDigits(const Real& time) {
+    const mpq_srcptr q = time.backend().data();
+    const std::size_t digits = mpz_sizeinbase(mpq_numref(q), 10) + mpz_sizeinbase(mpq_denref(q), 10);
+    if (digits <= exactDigits_ || !outgrown_.empty()) return;
+    outgrown_ = "stopped after " + std::to_string(board_.executedTotal()) + " events: the exact board time has " +
+                std::to_string(digits) + " digits, beyond the budget of " + std::to_string(exactDigits_);
+    board_.setRunLimit(typename GameBoard<Real>::RunLimit{board_.executedTotal(), std::nullopt});
+  }
+
   std::string describe(const TracePoint& p) const {
     auto name = [&](GizmoId id) { return id >= 0 && std::size_t(id) < board_.gizmoCount() ? board_.gizmo(id).name() : std::string("-"); };
     char time[32];
@@ -98,6 +109,8 @@ class TraceObserver final : public BoardObserver<Real> {
   GameBoard<Real>& board_;
   const Trace* reference_;
   Trace* record_;
+  std::size_t exactDigits_;
+  std::string outgrown_;  // why an exact run was stopped, if it was
   Agreement agreement_;
   std::uint64_t compared_ = 0;
   bool parted_ = false;
@@ -106,7 +119,7 @@ class TraceObserver final : public BoardObserver<Real> {
 }  // namespace detail
 
 template <class Real>
-TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* record) {
+TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* record, std::size_t exactDigits) {
   TracedRun result;
   std::unique_ptr<GameBoard<Real>> board;
   try {
@@ -115,7 +128,7 @@ TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* rec
     result.stopped = std::string("needs an irrational value before the first event: ") + e.what();
     return result;
   }
-  detail::TraceObserver<Real> observer(*board, reference, record);
+  detail::TraceObserver<Real> observer(*board, reference, record, exactDigits);
   board->setObserver(&observer);
   try {
     continueRun(*board, request, 0);
@@ -124,6 +137,7 @@ TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* rec
   } catch (const std::exception& e) {
     result.stopped = std::string("the run failed: ") + e.what();
   }
+  if (!observer.outgrown().empty()) result.stopped = observer.outgrown();
   observer.finish(board->now());
   result.events = board->executedTotal();
   result.compared = observer.compared();
@@ -133,11 +147,12 @@ TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* rec
 }
 
 template <class Real>
-double timeRun(const RunRequest& request, std::uint64_t& events) {
+double timeRun(const RunRequest& request, std::uint64_t maxEvents, std::uint64_t& events) {
   const auto start = std::chrono::steady_clock::now();
   std::unique_ptr<GameBoard<Real>> board;
   try {
     board = prepareRun<Real>(request);
+    board->setRunLimit(typename GameBoard<Real>::RunLimit{maxEvents, std::nullopt});
     continueRun(*board, request, 0);
   } catch (const std::exception&) {
     // The traced run reports why; the time is that of the part that ran.
@@ -147,7 +162,7 @@ double timeRun(const RunRequest& request, std::uint64_t& events) {
 }
 
 #define GIZMO_INSTANTIATE_TRACE_RUN(Real)                                                          \
-  template TracedRun traceRun<Real>(const RunRequest&, const Trace*, Trace*);                      \
-  template double timeRun<Real>(const RunRequest&, std::uint64_t&);
+  template TracedRun traceRun<Real>(const RunRequest&, const Trace*, Trace*, std::size_t);         \
+  template double timeRun<Real>(const RunRequest&, std::uint64_t, std::uint64_t&);
 
 }  // namespace gizmo::verify

@@ -105,5 +105,7 @@ CertifyReport certifyRun(const RunRequest& request, const CertifyOptions& option
 // The report as text (one line per count, one paragraph per wrong decision) and as JSON.
 void printCertifyReport(std::ostream& out, const CertifyReport& report);
 std::string certifyReportJson(const CertifyReport& report);
+// One wrong decision explained, on one line (as the text report prints it).
+std::string wrongDecisionLine(const WrongDecision& wrong);
 
 }  // namespace gizmo::verify

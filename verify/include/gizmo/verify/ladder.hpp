@@ -44,6 +44,24 @@ struct LadderOptions {
   RunRequest request;
   std::vector<PrecisionChoice> precisions;  // in the order to report
   std::optional<PrecisionChoice> reference;  // default: rational if the scene allows, else mpfr:256
+  // Where the run cannot be exact throughout, certify the double run's decisions instead
+  // (certify.hpp): the check goes on with certified arithmetic where exact arithmetic stops.
+  bool certifyWhereInexact = true;
+  // An exact run stops once the board time's numerator and denominator together have more
+  // digits than this: they grow with every event, and so does the cost of each operation
+  // (measured on fixtures/boards/verify/rational-squares.txt: 4 s of board time cost 1.3 s,
+  // 6 s 43 s). The reference then falls back to mpfr:256.
+  std::size_t exactDigits = 20000;
+};
+
+// The certificate of the double run, in counts (certify.hpp has the full report).
+struct CertifiedSummary {
+  std::uint64_t decisions = 0;
+  std::uint64_t certified = 0;
+  std::uint64_t notCertified = 0;  // e.g. near a swinging flipper
+  std::uint64_t ties = 0;
+  std::uint64_t wrong = 0;
+  std::string firstWrong;  // the first wrong decision explained, if any
 };
 
 struct LadderReport {
@@ -51,6 +69,7 @@ struct LadderReport {
   SceneArithmetic scene;
   std::vector<std::string> notes;  // e.g. the rational run stopped, and the reference fell back
   std::vector<PrecisionResult> results;
+  std::optional<CertifiedSummary> certified;  // when the run could not be exact throughout
 };
 
 // The ladder's default rungs: float, double, long-double, float128, bin50, bin100, mpfr:256,

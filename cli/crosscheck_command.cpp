@@ -1,0 +1,238 @@
+#include "crosscheck_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "board_input.hpp"
+#include "gizmo/verify/box2d_crosscheck.hpp"
+#include "gizmo/verify/box2d_mapping.hpp"
+#include "gizmo/verify/box2d_time_of_impact.hpp"
+
+namespace gizmo::cli {
+namespace {
+
+constexpr double kMinStep = 1e-5, kMaxStep = 0.1;
+constexpr double kMaxBox2dSteps = 1e7;  // summed over the step sizes
+
+// A whole number text as a double, or nullopt (no trailing characters, finite).
+std::optional<double> parseNumber(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !std::isfinite(x)) return std::nullopt;
+  return x;
+}
+
+// "0.01" or "1/60".
+std::optional<double> parseStep(const std::string& text) {
+  const std::size_t slash = text.find('/');
+  if (slash == std::string::npos) return parseNumber(text);
+  const std::optional<double> a = parseNumber(text.substr(0, slash)), b = parseNumber(text.substr(slash + 1));
+  if (!a || !b || *b == 0) return std::nullopt;
+  return *a / *b;
+}
+
+bool parseSteps(const std::string& list, double duration, std::vector<double>& out) {
+  std::stringstream in(list);
+  std::string item;
+  double total = 0;
+  while (std::getline(in, item, ',')) {
+    const std::optional<double> dt = parseStep(item);
+    if (!dt || !(*dt >= kMinStep && *dt <= kMaxStep)) {
+      std::cerr << "gizmo crosscheck: --dt '" << item << "' is not a step size from 1e-5 to 0.1 s (a number or 1/N)\n";
+      return false;
+    }
+    for (double d : out) {
+      if (d == *dt) {
+        std::cerr << "gizmo crosscheck: step size '" << item << "' is listed twice\n";
+        return false;
+      }
+    }
+    out.push_back(*dt);
+    total += duration / *dt;
+  }
+  if (out.empty()) {
+    std::cerr << "gizmo crosscheck: --dt lists no step size\n";
+    return false;
+  }
+  if (total > kMaxBox2dSteps) {
+    std::cerr << "gizmo crosscheck: --time and --dt ask for more than 1e7 Box2D steps\n";
+    return false;
+  }
+  return true;
+}
+
+nlohmann::ordered_json optionalTime(const std::optional<double>& t) { return t ? nlohmann::ordered_json(*t) : nullptr; }
+
+std::string levelName(double level) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", level);
+  return buf;
+}
+
+nlohmann::ordered_json mappingJson() {
+  using namespace verify;
+  return {{"polygon_skin", kBox2dPolygonSkin},
+          {"linear_slop", kBox2dLinearSlop},
+          {"toi_target_depth", 3 * kBox2dLinearSlop},
+          {"toi_tolerance", kBox2dToiTolerance},
+          {"max_translation_per_step", kBox2dMaxTranslation},
+          {"max_rotation_per_step", kBox2dMaxRotation}};
+}
+
+void printRunsJson(const CheckedRun& run, const CrosscheckCommandOptions& o, const verify::CrosscheckOptions& options,
+                   const verify::CrosscheckReport& r) {
+  nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+  for (const verify::StepComparison& s : r.steps) {
+    nlohmann::ordered_json above = nlohmann::ordered_json::object();
+    for (std::size_t l = 0; l < verify::kDivergenceLevels.size(); ++l)
+      above[levelName(verify::kDivergenceLevels[l])] = optionalTime(s.divergenceFrom[l]);
+    nlohmann::ordered_json first = nullptr;
+    if (s.firstUnmatched) {
+      const verify::CollisionRecord& c = s.firstUnmatched->collision;
+      first = {{"missed_by", s.firstUnmatched->side == "ours" ? "box2d" : "us"},
+               {"time", c.time}, {"ball", c.ball}, {"other", c.other}, {"x", c.position.x}, {"y", c.position.y}};
+    }
+    nlohmann::ordered_json series = nlohmann::ordered_json::array();
+    for (const auto& [t, d] : s.divergence) series.push_back({t, d});
+    steps.push_back({{"dt", s.dt},
+                     {"match_window", s.matchWindow},
+                     {"steps", s.steps},
+                     {"collisions", s.box2dCollisions},
+                     {"matched", s.matched},
+                     {"missed_by_box2d", s.missedByBox2d},
+                     {"missed_by_us", s.missedByUs},
+                     {"max_time_error", s.maxTimeError},
+                     {"mean_time_error", s.meanTimeError},
+                     {"max_position_error", s.maxPositionError},
+                     {"matched_within_toi", s.matchedWithinToi},
+                     {"first_unmatched", first},
+                     {"speed_capped_steps", s.speedCappedSteps},
+                     {"rotation_capped_steps", s.rotationCappedSteps},
+                     {"max_divergence", s.maxDivergence},
+                     {"divergence_above", above},
+                     {"divergence", series},
+                     {"energy_end", s.energyEnd},
+                     {"max_energy_difference", s.maxEnergyDifference},
+                     {"wall_seconds", s.wallSeconds}});
+  }
+  nlohmann::ordered_json out{{"board", run.boardName},
+                             {"model", o.run.model},
+                             {"time", o.run.time},
+                             {"max_tick", o.run.maxTick},
+                             {"box2d_version", verify::box2dVersion()},
+                             {"bullet", options.box2d.bullet},
+                             {"restitution_threshold", options.box2d.restitutionThreshold},
+                             {"velocity_iterations", options.box2d.velocityIterations},
+                             {"position_iterations", options.box2d.positionIterations},
+                             {"mapping", mappingJson()},
+                             {"ours", {{"collisions", r.ourCollisions},
+                                       {"events", r.ourEvents},
+                                       {"wall_seconds", r.ourWallSeconds},
+                                       {"energy_start", r.energyStart},
+                                       {"energy_end", r.ourEnergyEnd}}},
+                             {"steps", steps}};
+  std::cout << out.dump(2) << '\n';
+}
+
+void printRunsText(const CheckedRun& run, const CrosscheckCommandOptions& o, const verify::CrosscheckOptions& options,
+                   const verify::CrosscheckReport& r) {
+  std::printf("board      %s\n", run.boardName.c_str());
+  std::printf("ours       %s, double, %.6g s: %zu collisions, %llu events, %.4f s wall, energy %.6g -> %.6g\n",
+              o.run.model.c_str(), o.run.time, r.ourCollisions, static_cast<unsigned long long>(r.ourEvents),
+              r.ourWallSeconds, r.energyStart, r.ourEnergyEnd);
+  std::printf("box2d      %s, bullets %s, restitution threshold %g m/s, %d velocity / %d position iterations\n",
+              verify::box2dVersion().c_str(), options.box2d.bullet ? "on" : "off", options.box2d.restitutionThreshold,
+              options.box2d.velocityIterations, options.box2d.positionIterations);
+  std::printf("mapping    polygons inset by the %g L skin; Box2D's time of impact stops %g L past contact (+- %g);\n"
+              "           at most %g L and %g rad per step\n",
+              verify::kBox2dPolygonSkin, 3 * verify::kBox2dLinearSlop, verify::kBox2dToiTolerance,
+              verify::kBox2dMaxTranslation, verify::kBox2dMaxRotation);
+  std::printf("\n%-10s %7s %6s %7s %8s %8s %10s %10s %9s %6s %7s %9s %9s %9s %8s\n", "dt", "steps", "box2d", "matched",
+              "missed", "missed", "max dt", "mean dt", "max dpos", "in-toi", "capped", "div>0.1", "max div", "dE/E",
+              "wall s");
+  std::printf("%-10s %7s %6s %7s %8s %8s\n", "", "", "hits", "", "by box2d", "by us");
+  for (const verify::StepComparison& s : r.steps) {
+    char dt[32], diverged[32];
+    std::snprintf(dt, sizeof dt, "%.6g", s.dt);
+    if (s.divergenceFrom[1]) std::snprintf(diverged, sizeof diverged, "%.4g s", *s.divergenceFrom[1]);
+    else std::snprintf(diverged, sizeof diverged, "never");
+    std::printf("%-10s %7llu %6zu %7zu %8zu %8zu %10.3g %10.3g %9.3g %6zu %7llu %9s %9.3g %9.3g %8.4f\n", dt,
+                static_cast<unsigned long long>(s.steps), s.box2dCollisions, s.matched, s.missedByBox2d, s.missedByUs,
+                s.maxTimeError, s.meanTimeError, s.maxPositionError, s.matchedWithinToi,
+                static_cast<unsigned long long>(s.speedCappedSteps + s.rotationCappedSteps), diverged, s.maxDivergence,
+                s.maxEnergyDifference, s.wallSeconds);
+    if (s.firstUnmatched) {
+      const verify::CollisionRecord& c = s.firstUnmatched->collision;
+      std::printf("  first unmatched: %s hit of %s on %s at t = %.6g s, (%.4f, %.4f)\n",
+                  s.firstUnmatched->side == "ours" ? "our" : "Box2D's", c.ball.c_str(), c.other.c_str(), c.time,
+                  c.position.x, c.position.y);
+    }
+  }
+}
+
+int toiSurveyCommand(const CrosscheckCommandOptions& o) {
+  const std::vector<verify::SweepKindSurvey> survey = verify::surveySweeps(o.seed, o.toiSweeps);
+  if (o.run.json) {
+    nlohmann::ordered_json kinds = nlohmann::ordered_json::array();
+    for (const verify::SweepKindSurvey& k : survey)
+      kinds.push_back({{"kind", std::string(verify::sweepKindName(k.kind))},
+                       {"sweeps", k.sweeps},
+                       {"ours_hits", k.oursHits},
+                       {"box2d_hits", k.box2dHits},
+                       {"max_difference", k.maxDifference},
+                       {"min_depth", k.minDepth},
+                       {"max_depth", k.maxDepth},
+                       {"findings", k.findingCount},
+                       {"finding_examples", k.findings}});
+    nlohmann::ordered_json out{{"seed", o.seed}, {"sweeps_per_kind", o.toiSweeps}, {"box2d_version", verify::box2dVersion()},
+                               {"mapping", mappingJson()}, {"kinds", kinds}};
+    std::cout << out.dump(2) << '\n';
+    return kExitOk;
+  }
+  std::printf("seed %llu, %d straight sweeps per kind: our time of impact against b2TimeOfImpact (Box2D %s)\n",
+              static_cast<unsigned long long>(o.seed), o.toiSweeps, verify::box2dVersion().c_str());
+  std::printf("Box2D stops when the cores are within target +- tolerance: %g L past contact +- %g L\n\n",
+              3 * verify::kBox2dLinearSlop, verify::kBox2dToiTolerance);
+  std::printf("%-20s %7s %9s %10s %12s %22s %9s\n", "kind", "sweeps", "our hits", "box2d hits", "max |dt| s",
+              "depth min..max L", "findings");
+  for (const verify::SweepKindSurvey& k : survey)
+    std::printf("%-20s %7d %9d %10d %12.3g %10.5f..%-10.5f %9d\n", std::string(verify::sweepKindName(k.kind)).c_str(),
+                k.sweeps, k.oursHits, k.box2dHits, k.maxDifference, k.minDepth, k.maxDepth, k.findingCount);
+  for (const verify::SweepKindSurvey& k : survey)
+    for (const std::string& f : k.findings) std::printf("finding: %s\n", f.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+int crosscheckCommand(const CrosscheckCommandOptions& o) {
+  if (!(o.restitutionThreshold >= 0 && o.restitutionThreshold <= 1000)) {
+    std::cerr << "gizmo crosscheck: --restitution-threshold must be from 0 to 1000 m/s\n";
+    return kExitBadInput;
+  }
+  if (o.toiSweeps < 0 || o.toiSweeps > 1000000) {
+    std::cerr << "gizmo crosscheck: --toi-sweeps must be from 0 to 1000000\n";
+    return kExitBadInput;
+  }
+  if (o.toiSweeps > 0) return toiSurveyCommand(o);
+  CheckedRun run;
+  int code = kExitOk;
+  if (!checkRun(o.run, "crosscheck", run, code)) return code;
+  verify::CrosscheckOptions options;
+  options.request = run.request;
+  options.steps.clear();
+  if (!parseSteps(o.steps, o.run.time, options.steps)) return kExitBadInput;
+  options.box2d.bullet = !o.noBullet;
+  options.box2d.restitutionThreshold = o.restitutionThreshold;
+  const verify::CrosscheckReport report = verify::crosscheck(options);
+  if (o.run.json) printRunsJson(run, o, options, report);
+  else printRunsText(run, o, options, report);
+  return kExitOk;
+}
+
+}  // namespace gizmo::cli

@@ -1,0 +1,35 @@
+#pragma once
+// The core's gizmos ask a BoardAccess for the time, the constants and the balls when they act.
+// The Box2D bridge drives the core's own flippers and absorbers (their swing schedule, their
+// capture queue) outside any event queue: this access gives them a clock that the bridge sets
+// and balls that mirror Box2D's bodies, and ignores what only the event queue needs
+// (recomputation, scheduling, sliding contacts).
+#include <functional>
+#include <utility>
+
+#include "gizmo/core/gizmos/ball.hpp"
+
+namespace gizmo::verify {
+
+class DrivenBoardAccess final : public BoardAccess<double> {
+ public:
+  using BallLookup = std::function<Ball<double>&(GizmoId)>;
+  DrivenBoardAccess(const PhysicsParams<double>& params, BallLookup balls) : params_(params), balls_(std::move(balls)) {}
+
+  void setNow(double t) { now_ = t; }
+  const double& now() const override { return now_; }
+  const PhysicsParams<double>& params() const override { return params_; }
+  Ball<double>& ballById(GizmoId id) override { return balls_(id); }
+  void markForRecompute(GizmoId) override {}
+  void schedule(EventKind, const double&, GizmoId, GizmoId, std::int32_t) override {}
+  void reportRule(ModelRule, GizmoId, GizmoId) override {}
+  bool jammed() const override { return false; }
+  void releaseContactsOn(GizmoId) override {}
+
+ private:
+  PhysicsParams<double> params_;
+  BallLookup balls_;
+  double now_ = 0;
+};
+
+}  // namespace gizmo::verify
