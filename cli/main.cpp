@@ -7,7 +7,10 @@
 #include "log_commands.hpp"
 #include "run_command.hpp"
 #include "verify_command.hpp"
+#include "fuzz_command.hpp"
 #include "crosscheck_command.hpp"
+#include "render_command.hpp"
+#include "study_command.hpp"
 
 int main(int argc, char** argv) {
   using namespace gizmo::cli;
@@ -104,6 +107,57 @@ int main(int argc, char** argv) {
   crosscheckCmd->add_option("--seed", crosscheck.seed, "The sweeps' seed")->capture_default_str();
   crosscheckCmd->add_flag("--json", crosscheck.run.json, "Print one JSON object");
   crosscheckCmd->callback([&] { code = crosscheckCommand(crosscheck); });
+
+  FuzzOptions fuzz;
+  CLI::App* fuzzCmd = app.add_subcommand(
+      "fuzz", "Check properties (docs/fuzzing.md) on generated boards; each failure is shrunk to a minimal board and,\n"
+              "with --out, written there with its key script, its log and a command that checks it again (exit 1).\n"
+              "Example: gizmo fuzz --count 200 --jobs 2 --out fuzz-results");
+  fuzzCmd->add_option("--property", fuzz.property, "all, or one of: " + fuzzPropertyList())
+      ->capture_default_str();
+  fuzzCmd->add_option("--count", fuzz.count, "Cases in the campaign, numbered from 0")->capture_default_str();
+  fuzzCmd->add_option("--seed", fuzz.seed, "Campaign seed: case k is made from (seed, k) alone")->capture_default_str();
+  fuzzCmd->add_option("--jobs", fuzz.jobs, "Threads")->capture_default_str();
+  fuzzCmd->add_option("--shard", fuzz.shard, "K/N: only the cases k with k % N == K (one task of a job array)");
+  fuzzCmd->add_option("--out", fuzz.out, "Folder for results.txt and one folder per failure");
+  fuzzCmd->add_option("--time", fuzz.wallSeconds, "Stop starting new cases after this many seconds of wall time");
+  fuzzCmd->add_option("--shrink-budget", fuzz.shrinkBudget, "Property checks spent shrinking one failure")
+      ->capture_default_str();
+  CLI::Option* fuzzMerge = fuzzCmd->add_option("--merge", fuzz.merge, "Merge the --out folders of a campaign's shards");
+  CLI::Option* fuzzCheck = fuzzCmd->add_option("--check", fuzz.check, "Check the properties on this board instead");
+  fuzzCmd->add_option("--keys", fuzz.run.keys, "With --check: key script");
+  fuzzCmd->add_option("--model", fuzz.run.model, "With --check: ballistic or classic")->capture_default_str();
+  fuzzCmd->add_option("--max-tick", fuzz.run.maxTick, "With --check: maximum tick length, seconds")->capture_default_str();
+  fuzzCmd->add_option("--duration", fuzz.run.time, "With --check: seconds of board time")->capture_default_str();
+  fuzzMerge->excludes(fuzzCheck);
+  for (const char* campaignOnly : {"--count", "--seed", "--jobs", "--shard", "--out", "--time", "--property"})
+    fuzzMerge->excludes(fuzzCmd->get_option(campaignOnly));
+  fuzzCmd->callback([&] { code = fuzzCommand(fuzz); });
+
+  StudyOptions study;
+  CLI::App* studyCmd = app.add_subcommand(
+      "study", "The speed/accuracy study: every method (classic model over maximum tick lengths, ballistic model, each\n"
+               "at every precision; Box2D over step sizes with and without bullets) on a suite of scenes, its cost\n"
+               "and its errors against the ballistic mpfr:256 run, written as CSV, JSON, SVG charts and an HTML page.\n"
+               "Example: gizmo study --quick --out study-quick");
+  studyCmd->add_option("--scenes", study.scenes, "A folder holding suite.txt (default: the built-in fixtures/study)");
+  studyCmd->add_option("--out", study.out, "The folder to write into")->capture_default_str();
+  studyCmd->add_flag("--quick", study.quick, "A small plan on the scenes with a quick duration: a couple of minutes");
+  studyCmd->callback([&] { code = studyCommand(study); });
+
+  RenderOptions render;
+  CLI::App* renderCmd = app.add_subcommand(
+      "render", "Draw a run or a board: a log as one self-contained HTML replay player (-o run.html), or a board\n"
+                "(a board file, a log, or the built-in one) as an SVG picture (-o board.svg), optionally with a run's\n"
+                "ball paths and collision points (--trace LOG). docs/render.md.\n"
+                "Example: gizmo render run.gzlog -o run.html --compare run-mpfr.gzlog");
+  renderCmd->add_option("input", render.input, "The log to play, or the board (or log) to draw");
+  renderCmd->add_option("-o,--output", render.output, "The file to write: .html or .svg")->required();
+  renderCmd->add_option("--compare", render.compare, "Player: a second log of the same board, laid over the first");
+  renderCmd->add_option("--trace", render.trace, "Picture: draw this log's ball paths and collision points");
+  renderCmd->add_option("--tolerance", render.tolerance,
+                        "Leave out ball path pieces that stay this close (L) to the one before (default 1e-3; 0 keeps all)");
+  renderCmd->callback([&] { code = renderCommand(render); });
 
   try {
     app.parse(argc, argv);

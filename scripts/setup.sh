@@ -9,6 +9,7 @@ packages=(
   libboost-dev libgmp-dev libmpfr-dev libmpfi-dev
   libpugixml-dev libcli11-dev nlohmann-json3-dev libfmt-dev
   librapidcheck-dev libbox2d-dev
+  gnuplot-nox
 )
 
 missing=()

@@ -25,12 +25,11 @@ class OurRecorder final : public BoardObserver<double> {
     const AbstractGizmo<double>& b = board_.gizmo(e.b);
     const AbstractGizmo<double>& ball = a.asBall() ? a : b;
     const AbstractGizmo<double>& other = a.asBall() ? b : a;
-    std::string first = ball.name(), second = other.name();
-    if (other.asBall() && second < first) std::swap(first, second);
-    Vec2<double> p = board_.gizmo(*board_.find(first)).asBall()->positionAt(e.time);
+    CollisionRecord hit = collisionRecord(e.time, ball.name(), other.name(), other.asBall() != nullptr);
+    hit.position = board_.gizmo(*board_.find(hit.ball)).asBall()->positionAt(e.time);
     for (const BallChange<double>& c : outcome.balls())
-      if (board_.gizmo(c.ball).name() == first) p = c.position;
-    record_.collisions.push_back(CollisionRecord{e.time, first, second, p});
+      if (board_.gizmo(c.ball).name() == hit.ball) hit.position = c.position;
+    record_.collisions.push_back(std::move(hit));
   }
 
   void tickBoundary(const double& time) override {
@@ -47,7 +46,8 @@ class OurRecorder final : public BoardObserver<double> {
   std::vector<GizmoId> balls_;
 };
 
-// Box2D's sample at time t, interpolated linearly between the steps around it.
+}  // namespace
+
 TrajectorySample interpolate(const std::vector<TrajectorySample>& samples, double dt, double t) {
   const std::size_t last = samples.size() - 1;
   const std::size_t k = std::min(last, static_cast<std::size_t>(std::max(0.0, std::floor(t / dt))));
@@ -61,6 +61,8 @@ TrajectorySample interpolate(const std::vector<TrajectorySample>& samples, doubl
   s.energy = a.energy + f * (b.energy - a.energy);
   return s;
 }
+
+namespace {
 
 void compareCollisions(const RunRecord& ours, const RunRecord& box2d, StepComparison& out) {
   const auto pairs = matchCollisions(ours.collisions, box2d.collisions, out.matchWindow);

@@ -242,7 +242,9 @@ class Box2dBridge final : public b2ContactListener {
     const BodyInfo& other = bodies_[n.other];
     Ball<double>& shadowBall = shadow_->ballById(ball.id);
     if (n.kind == ContactNote::Kind::Hit) {
-      record.collisions.push_back(CollisionRecord{n.time, ball.name, other.name, n.position});
+      CollisionRecord hit = collisionRecord(n.time, ball.name, other.name, other.ball);
+      hit.position = n.position;
+      record.collisions.push_back(std::move(hit));
       if (!other.ball) fireTriggersOf(other.id, n.time);
       return;
     }
@@ -348,6 +350,11 @@ class Box2dBridge final : public b2ContactListener {
 };
 
 }  // namespace
+
+CollisionRecord collisionRecord(double time, std::string ball, std::string other, bool otherIsBall) {
+  if (otherIsBall && other < ball) std::swap(ball, other);
+  return CollisionRecord{time, std::move(ball), std::move(other), Vec2<double>()};
+}
 
 std::string box2dVersion() {
   return std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) + "." + std::to_string(b2_version.revision);

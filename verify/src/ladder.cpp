@@ -38,16 +38,19 @@ std::vector<PrecisionChoice> defaultLadder(const RunRequest& request) {
   return ladder;
 }
 
+TracedRun traceAt(const PrecisionChoice& p, const RunRequest& request, const Trace* reference, Trace* record,
+                  std::size_t exactDigits, const TraceExtras& extras) {
+  return withPrecision(p, [&]<class Real>() { return traceRun<Real>(request, reference, record, exactDigits, extras); });
+}
+
+double timeAt(const PrecisionChoice& p, const RunRequest& request, std::uint64_t maxEvents, std::uint64_t& events) {
+  return withPrecision(p, [&]<class Real>() { return timeRun<Real>(request, maxEvents, events); });
+}
+
 namespace {
 
 TracedRun traceAt(const PrecisionChoice& p, const LadderOptions& o, const Trace* reference, Trace* record) {
-  return withPrecision(p, [&]<class Real>() { return traceRun<Real>(o.request, reference, record, o.exactDigits); });
-}
-
-// The cost of a run over as many events as its traced run made (an exact run that outgrew its
-// budget is timed to the same point).
-double timeAt(const PrecisionChoice& p, const RunRequest& request, std::uint64_t maxEvents, std::uint64_t& events) {
-  return withPrecision(p, [&]<class Real>() { return timeRun<Real>(request, maxEvents, events); });
+  return traceAt(p, o.request, reference, record, o.exactDigits);
 }
 
 bool samePrecision(const PrecisionChoice& a, const PrecisionChoice& b) { return precisionName(a) == precisionName(b); }
@@ -86,6 +89,8 @@ LadderReport runLadder(const LadderOptions& options) {
     report.certified = summary;
   }
 
+  // The cost of a run over as many events as its traced run made (an exact run that outgrew
+  // its budget is timed to the same point).
   std::uint64_t doubleEvents = 0;
   const double doubleSeconds =
       timeAt(*parsePrecision("double"), options.request, std::numeric_limits<std::uint64_t>::max(), doubleEvents);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gizmo/core/math/precision.hpp"
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/verify/wide_value.hpp"
 
@@ -36,6 +37,25 @@ struct Agreement {
   std::string difference;  // the two decisions at the first difference, in words
 };
 
+// The balls' positions and the board's energy at one fixed instant of board time, held wide.
+struct TraceSample {
+  double time = 0;
+  std::vector<WideValue> x, y;  // every ball, in the board's order (captured balls at their hold)
+  WideValue energy;
+};
+
+// What a traced run does besides recording or comparing its events.
+struct TraceExtras {
+  // Increasing instants at which to sample the balls. Each must be a tick boundary of the run
+  // (a multiple of its maximum tick length): only there is the state between two events at
+  // hand, so that the classic model's straight steps are sampled where they really are.
+  std::vector<double> sampleAt;
+  std::vector<TraceSample>* samples = nullptr;
+  // The ladder stops a run at its first difference from the reference (nothing after it is
+  // comparable); the study runs on to sample positions to the end.
+  bool stopAtDifference = true;
+};
+
 struct TracedRun {
   std::uint64_t events = 0;
   std::uint64_t compared = 0;  // the events that change the board (all but recalculations)
@@ -51,11 +71,17 @@ struct TracedRun {
 // together have more than exactDigits decimal digits: every event makes them longer, and the
 // cost of each operation grows with them.
 template <class Real>
-TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* record, std::size_t exactDigits);
+TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* record, std::size_t exactDigits,
+                   const TraceExtras& extras = {});
 
 // Wall seconds of the same run without any observer, over at most maxEvents events: the cost of
 // the scalar itself.
 template <class Real>
 double timeRun(const RunRequest& request, std::uint64_t maxEvents, std::uint64_t& events);
+
+// traceRun and timeRun at a precision chosen at run time (ladder.cpp).
+TracedRun traceAt(const PrecisionChoice& precision, const RunRequest& request, const Trace* reference, Trace* record,
+                  std::size_t exactDigits, const TraceExtras& extras = {});
+double timeAt(const PrecisionChoice& precision, const RunRequest& request, std::uint64_t maxEvents, std::uint64_t& events);
 
 }  // namespace gizmo::verify

@@ -1,8 +1,11 @@
 #pragma once
 // traceRun and timeRun for one scalar; included by the trace_run_*.cpp files only.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 
 #include "trace.hpp"
 
@@ -13,8 +16,11 @@ namespace detail {
 template <class Real>
 class TraceObserver final : public BoardObserver<Real> {
  public:
-  TraceObserver(GameBoard<Real>& board, const Trace* reference, Trace* record, std::size_t exactDigits)
-      : board_(board), reference_(reference), record_(record), exactDigits_(exactDigits) {}
+  TraceObserver(GameBoard<Real>& board, const Trace* reference, Trace* record, std::size_t exactDigits,
+                const TraceExtras& extras)
+      : board_(board), reference_(reference), record_(record), exactDigits_(exactDigits), extras_(extras) {
+    tickBoundary(board.now());  // an instant at 0 is sampled before anything runs
+  }
 
   void eventExecuted(const Event<Real>& e, const EventOutcome<Real>& outcome) override {
     // A recalculation changes nothing on the board, it only predicts again; and where it falls
@@ -38,6 +44,34 @@ class TraceObserver final : public BoardObserver<Real> {
     p.energy = WideValue::of(board_.energy());
     if (record_ != nullptr) record_->push_back(p);
     if (reference_ != nullptr) compare(p);
+  }
+
+  // The balls at every sampling instant this boundary reaches. An instant the run has passed
+  // without a boundary on it cannot be sampled from here: that is a caller's error.
+  void tickBoundary(const Real& now) override {
+    if (extras_.samples == nullptr) return;
+    const double t = toDouble(now);
+    // Boundaries are counted as start + k·maxTick in the run's own scalar: they meet an instant
+    // only to within that scalar's rounding (a float run's boundary at 2 s is 1e-7 s off), and
+    // they are a whole tick apart, so the nearest boundary within a quarter tick is the instant's.
+    const double slack = toDouble(board_.params().maxTick) / 4;
+    for (; nextSample_ < extras_.sampleAt.size() && extras_.sampleAt[nextSample_] <= t + slack; ++nextSample_) {
+      const double at = extras_.sampleAt[nextSample_];
+      if (at < t - slack)
+        throw std::invalid_argument("sampling instant " + std::to_string(at) + " s is not a tick boundary of the run");
+      // The state at this boundary holds until the next event, so the path is evaluated at the
+      // instant itself, the same value in every scalar.
+      const Real instant = fromDouble<Real>(at);
+      TraceSample sample;
+      sample.time = at;
+      for (GizmoId id : board_.ballIds()) {
+        const Vec2<Real> p = board_.gizmo(id).asBall()->positionAt(instant);
+        sample.x.push_back(WideValue::of(p.x));
+        sample.y.push_back(WideValue::of(p.y));
+      }
+      sample.energy = WideValue::of(board_.energy());
+      extras_.samples->push_back(std::move(sample));
+    }
   }
 
   // Called when the run has ended: a run that made fewer or more events than the reference
@@ -103,13 +137,15 @@ class TraceObserver final : public BoardObserver<Real> {
     agreement_.time = time;
     agreement_.difference = std::move(difference);
     // Nothing after the first difference is compared: stop the run at the next event.
-    board_.setRunLimit(typename GameBoard<Real>::RunLimit{board_.executedTotal(), std::nullopt});
+    if (extras_.stopAtDifference) board_.setRunLimit(typename GameBoard<Real>::RunLimit{board_.executedTotal(), std::nullopt});
   }
 
   GameBoard<Real>& board_;
   const Trace* reference_;
   Trace* record_;
   std::size_t exactDigits_;
+  const TraceExtras& extras_;
+  std::size_t nextSample_ = 0;
   std::string outgrown_;  // why an exact run was stopped, if it was
   Agreement agreement_;
   std::uint64_t compared_ = 0;
@@ -119,7 +155,8 @@ class TraceObserver final : public BoardObserver<Real> {
 }  // namespace detail
 
 template <class Real>
-TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* record, std::size_t exactDigits) {
+TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* record, std::size_t exactDigits,
+                   const TraceExtras& extras) {
   TracedRun result;
   std::unique_ptr<GameBoard<Real>> board;
   try {
@@ -128,7 +165,7 @@ TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* rec
     result.stopped = std::string("needs an irrational value before the first event: ") + e.what();
     return result;
   }
-  detail::TraceObserver<Real> observer(*board, reference, record, exactDigits);
+  detail::TraceObserver<Real> observer(*board, reference, record, exactDigits, extras);
   board->setObserver(&observer);
   try {
     continueRun(*board, request, 0);
@@ -162,7 +199,7 @@ double timeRun(const RunRequest& request, std::uint64_t maxEvents, std::uint64_t
 }
 
 #define GIZMO_INSTANTIATE_TRACE_RUN(Real)                                                          \
-  template TracedRun traceRun<Real>(const RunRequest&, const Trace*, Trace*, std::size_t);         \
+  template TracedRun traceRun<Real>(const RunRequest&, const Trace*, Trace*, std::size_t, const TraceExtras&); \
   template double timeRun<Real>(const RunRequest&, std::uint64_t, std::uint64_t&);
 
 }  // namespace gizmo::verify

@@ -70,6 +70,10 @@ CrosscheckReport crosscheck(const CrosscheckOptions& options);
 // number of executed events.
 RunRecord runOurs(const RunRequest& request, std::uint64_t& events);
 
+// A run's sample at time t, interpolated linearly between the samples around it, which are
+// taken every dt from time 0 (Box2D's steps).
+TrajectorySample interpolate(const std::vector<TrajectorySample>& samples, double dt, double t);
+
 // Matches two collision lists: pairs of indices (ours, Box2D's), the closest in time first,
 // within `window` seconds and kMatchDistance.
 std::vector<std::pair<std::size_t, std::size_t>> matchCollisions(const std::vector<CollisionRecord>& ours,

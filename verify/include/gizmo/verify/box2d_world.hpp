@@ -20,6 +20,10 @@ struct CollisionRecord {
   Vec2<double> position;  // the ball's centre at the hit
 };
 
+// A hit of `ball` on `other` at `time`: two balls are named in the order of their names, so that
+// both sides of a comparison name a pair alike. The position is the caller's to set.
+CollisionRecord collisionRecord(double time, std::string ball, std::string other, bool otherIsBall);
+
 // The balls' centres (in the board file's order) and the mechanical energy at one instant.
 struct TrajectorySample {
   double time = 0;

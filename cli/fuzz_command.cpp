@@ -1,0 +1,148 @@
+#include "fuzz_command.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+#include "board_input.hpp"
+#include "gizmo/verify/fuzz/campaign.hpp"
+#include "gizmo/verify/fuzz/properties.hpp"
+#include "gizmo/verify/fuzz/run_description.hpp"
+
+namespace gizmo::cli {
+namespace {
+
+namespace fz = gizmo::verify::fuzz;
+
+bool chooseProperties(const std::string& name, std::vector<const fz::Property*>& out) {
+  if (name == "all") {
+    for (const fz::Property& p : fz::allProperties()) out.push_back(&p);
+    return true;
+  }
+  if (const fz::Property* p = fz::findProperty(name)) {
+    out.push_back(p);
+    return true;
+  }
+  std::cerr << "gizmo fuzz: unknown property '" << name << "' (all, " << fz::propertyNames() << ")\n";
+  return false;
+}
+
+// "K/N" with 0 <= K < N.
+bool parseShard(const std::string& text, std::uint64_t& k, std::uint64_t& n) {
+  unsigned long long a = 0, b = 0;
+  int used = 0;
+  if (std::sscanf(text.c_str(), "%llu/%llu%n", &a, &b, &used) != 2 || used != int(text.size()) || b == 0 || a >= b ||
+      text[0] == '-' || text.find("/-") != std::string::npos) {
+    std::cerr << "gizmo fuzz: --shard must be K/N with 0 <= K < N (e.g. 0/4), not '" << text << "'\n";
+    return false;
+  }
+  k = a, n = b;
+  return true;
+}
+
+void printFailures(const fz::CampaignResult& r) {
+  for (const fz::CaseOutcome& c : r.outcomes) {
+    if (c.holds) continue;
+    std::cout << "FAIL " << c.property << " case " << c.index << " (seed " << c.seed << ", size " << c.size << ")";
+    if (!c.folder.empty()) std::cout << ": " << c.folder;
+    std::cout << '\n';
+    if (!c.message.empty()) std::cout << "  " << c.message << '\n';
+  }
+}
+
+// --check: one property on one run read from files.
+int checkOne(const FuzzOptions& o, const std::vector<const fz::Property*>& properties) {
+  CheckedRun run;
+  int code = kExitOk;
+  RunOptions options = o.run;
+  options.board = o.check;
+  if (!checkRun(options, "fuzz", run, code)) return code;
+  int result = kExitOk;
+  for (const fz::Property* p : properties) {
+    fz::PropertyResult r;
+    try {
+      r = p->check(run.request);
+    } catch (const std::exception& e) {
+      r = fz::PropertyResult{false, std::string("threw: ") + e.what(), 0};
+    }
+    std::cout << p->name << ": " << (r.holds ? "holds" : "FAILS") << '\n';
+    if (!r.holds) {
+      std::cout << "  " << r.message << '\n';
+      result = kExitCheckFailed;
+    }
+  }
+  return result;
+}
+
+int mergeResults(const FuzzOptions& o) {
+  std::vector<std::pair<std::string, fz::CampaignResult>> parts;
+  fz::CampaignResult merged;
+  try {
+    for (const std::string& dir : o.merge) parts.emplace_back(dir, fz::readCampaign(dir));
+    merged = fz::mergeCampaigns(parts);
+  } catch (const fz::CampaignError& e) {
+    std::cerr << "gizmo fuzz --merge: " << e.what() << '\n';
+    return kExitBadInput;
+  }
+  std::cout << "fuzz: " << fz::summaryLine(merged) << '\n';
+  printFailures(merged);
+  return fz::failureCount(merged) == 0 ? kExitOk : kExitCheckFailed;
+}
+
+}  // namespace
+
+std::string fuzzPropertyList() { return fz::propertyNames(); }
+
+int fuzzCommand(const FuzzOptions& o) {
+  if (!o.merge.empty()) return mergeResults(o);
+  std::vector<const fz::Property*> properties;
+  if (!chooseProperties(o.property, properties)) return kExitBadInput;
+  if (!o.check.empty()) return checkOne(o, properties);
+
+  fz::CampaignOptions c;
+  c.properties = properties;
+  c.count = o.count;
+  c.seed = o.seed;
+  c.jobs = o.jobs;
+  c.shrinkBudget = o.shrinkBudget;
+  if (!o.shard.empty() && !parseShard(o.shard, c.shard, c.shards)) return kExitBadInput;
+  if (o.jobs == 0 || o.jobs > 1024) {
+    std::cerr << "gizmo fuzz: --jobs must be from 1 to 1024\n";
+    return kExitBadInput;
+  }
+  if (!(o.wallSeconds >= 0)) {
+    std::cerr << "gizmo fuzz: --time must be a number of seconds, 0 or more\n";
+    return kExitBadInput;
+  }
+  // The wall-clock budget belongs here, not in the library: it is the one thing that makes a
+  // campaign's result depend on the machine (docs/fuzzing.md).
+  const auto start = std::chrono::steady_clock::now();
+  if (o.wallSeconds > 0)
+    c.stop = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > o.wallSeconds; };
+  const bool tty = ::isatty(STDERR_FILENO);
+  c.progress = [&](std::uint64_t done, std::uint64_t planned, std::uint64_t failures) {
+    // On a terminal one line that updates itself; in a log, a line every tenth of the way.
+    if (tty) std::cerr << "\rgizmo fuzz: " << done << "/" << planned << " cases, " << failures << " failures" << std::flush;
+    else if (done == planned || done % std::max<std::uint64_t>(1, planned / 10) == 0)
+      std::cerr << "gizmo fuzz: " << done << "/" << planned << " cases, " << failures << " failures\n";
+  };
+  std::cerr << "gizmo fuzz: seed " << o.seed << ", " << o.count << " cases"
+            << (o.shard.empty() ? std::string() : ", shard " + o.shard) << ", " << o.jobs << " jobs, properties "
+            << o.property << '\n';
+  fz::CampaignResult result = fz::runCampaign(c);
+  if (tty) std::cerr << '\n';
+  if (!o.out.empty()) {
+    try {
+      fz::writeCampaign(result, o.out, "gizmo");
+    } catch (const fz::CampaignError& e) {
+      std::cerr << "gizmo fuzz: " << e.what() << '\n';
+      return kExitBadInput;
+    }
+  }
+  std::cout << "fuzz: " << fz::summaryLine(result) << '\n';
+  printFailures(result);
+  return fz::failureCount(result) == 0 ? kExitOk : kExitCheckFailed;
+}
+
+}  // namespace gizmo::cli

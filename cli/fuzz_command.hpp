@@ -1,0 +1,30 @@
+#pragma once
+// `gizmo fuzz`: the properties of docs/fuzzing.md on generated runs (a campaign, sharded if
+// asked), the merge of sharded campaigns' results, or one property on one given run (--check,
+// the command each failure's folder holds).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "run_options.hpp"
+
+namespace gizmo::cli {
+
+struct FuzzOptions {
+  std::string property = "all";
+  std::uint64_t count = 100;
+  std::uint64_t seed = 1;
+  unsigned jobs = 1;
+  std::string shard;        // "K/N"; empty: the whole campaign
+  std::string out;          // results folder; empty: failures are only printed
+  double wallSeconds = 0;   // --time: stop starting cases after this long (0: no limit)
+  std::size_t shrinkBudget = 100;
+  std::vector<std::string> merge;  // --merge DIR...: merge these results folders
+  std::string check;        // --check BOARD: check one run instead of generating
+  RunOptions run;           // --keys, --model, --max-tick, --duration for --check
+};
+int fuzzCommand(const FuzzOptions& options);
+// The property names, comma-separated, for the help text.
+std::string fuzzPropertyList();
+
+}  // namespace gizmo::cli

@@ -1,0 +1,588 @@
+// The replay player. It reads the run data that `gizmo render` put into the page (arrays as
+// base64, docs/render.md), and draws the board at any moment: each ball on its true path (the
+// pieces p + v·τ + ½·a·τ² the log's states anchor), each flipper on its swing. The page fetches
+// nothing. A page opened as FILE#event=N shows the board after N events and writes what it drew
+// into #probe, which the browser test compares with `gizmo replay --event N`.
+"use strict";
+(function () {
+  // ---- Reading the data -----------------------------------------------------------------------
+  const startedAt = performance.now();
+  const data = JSON.parse(document.getElementById("run-data").textContent);
+  const names = data.names;
+  const board = data.board;
+  const SWING_TIME = 1 / 12;  // physics.md §2: a flipper swings a quarter turn in 1/12 s
+  const QUARTER = Math.PI / 2;
+
+  function bytesOf(text) {
+    const raw = atob(text);
+    const out = new Uint8Array(raw.length);
+    for (let i = 0; i < raw.length; i++) out[i] = raw.charCodeAt(i);
+    return out;
+  }
+  // Each array has its own buffer, so that every typed view is aligned.
+  function arrayOf(Type, text) {
+    const b = bytesOf(text);
+    return new Type(b.buffer, 0, b.length / Type.BYTES_PER_ELEMENT);
+  }
+
+  function loadRun(r) {
+    const ev = r.events;
+    const run = {
+      label: r.label, model: r.model, precision: r.precision, duration: r.duration,
+      end: r.end_time, tolerance: r.tolerance, truncation: r.truncation, gizmoNames: r.gizmo_names,
+      count: ev.count,
+      time: arrayOf(Float64Array, ev.time), kind: arrayOf(Uint8Array, ev.kind),
+      a: arrayOf(Int16Array, ev.a), b: arrayOf(Int16Array, ev.b), feature: arrayOf(Int16Array, ev.feature),
+      accelerations: r.accelerations,
+      balls: r.balls.map((b) => ({
+        name: b.name, id: b.id, count: b.pieces,
+        event: arrayOf(Int32Array, b.event), p: arrayOf(Float64Array, b.p), v: arrayOf(Float64Array, b.v),
+        a: arrayOf(Uint16Array, b.a), logged: arrayOf(Uint8Array, b.logged),
+      })),
+      flippers: new Map(),
+      notes: {
+        patterns: r.notes.patterns,
+        index: arrayOf(r.notes.index_bytes === 2 ? Uint16Array : Uint32Array, r.notes.index),
+      },
+    };
+    for (const f of r.flippers) {
+      run.flippers.set(f.id, {
+        count: f.anchors, event: arrayOf(Int32Array, f.event),
+        s0: arrayOf(Float32Array, f.s0), direction: arrayOf(Int8Array, f.direction),
+      });
+    }
+    return run;
+  }
+  const runs = data.runs.map(loadRun);
+  const main = runs[0];
+  const endTime = Math.max(...runs.map((r) => r.end), 1e-9);
+
+  // ---- Searching sorted arrays ----------------------------------------------------------------
+  // The number of entries of a[0..n) that are <= value.
+  function countAtMost(a, n, value) {
+    let lo = 0, hi = n;
+    while (lo < hi) {
+      const mid = (lo + hi) >>> 1;
+      if (a[mid] <= value) lo = mid + 1; else hi = mid;
+    }
+    return lo;
+  }
+  // The number of entries of a[0..n) that are < value.
+  function countBelow(a, n, value) {
+    let lo = 0, hi = n;
+    while (lo < hi) {
+      const mid = (lo + hi) >>> 1;
+      if (a[mid] < value) lo = mid + 1; else hi = mid;
+    }
+    return lo;
+  }
+
+  // ---- The state at a moment ------------------------------------------------------------------
+  // A moment is a time and the number of events run by then; the number matters when several
+  // events share one time (the state after the first of them is not the state after the last).
+  function eventsBy(run, t) { return countAtMost(run.time, run.count, t); }
+
+  function pieceTime(run, ball, i) { const e = ball.event[i]; return e < 0 ? 0 : run.time[e]; }
+
+  // The ball's position in the simulator's own operations (Trajectory::positionAt), so that a
+  // double run is drawn at exactly the positions it computed.
+  function ballAt(run, ball, t, done) {
+    const i = Math.max(0, countAtMost(ball.event, ball.count, done - 1) - 1);
+    const acc = run.accelerations[ball.a[i]];
+    const tau = t - pieceTime(run, ball, i);
+    const half = 0.5;
+    const h = half * tau * tau;
+    return {
+      x: ball.p[2 * i] + tau * ball.v[2 * i] + h * acc[0],
+      y: ball.p[2 * i + 1] + tau * ball.v[2 * i + 1] + h * acc[1],
+      vx: ball.v[2 * i] + tau * acc[0], vy: ball.v[2 * i + 1] + tau * acc[1],
+      piece: i,
+    };
+  }
+
+  function flipperAngle(run, id, g, t, done) {
+    const f = run.flippers.get(id);
+    let s = 0;
+    if (f) {
+      const j = Math.max(0, countAtMost(f.event, f.count, done - 1) - 1);
+      const t0 = f.event[j] < 0 ? 0 : run.time[f.event[j]];
+      s = Math.min(SWING_TIME, Math.max(0, f.s0[j] + f.direction[j] * (t - t0)));
+    }
+    return g.rest_quarter * QUARTER + g.forward_sign * 6 * Math.PI * s;
+  }
+
+  // ---- Text -----------------------------------------------------------------------------------
+  // A double as C's %a prints it (the `exact` texts of gizmo's JSON): the test compares bits.
+  function hexFloat(x) {
+    if (Number.isNaN(x)) return "nan";
+    if (!Number.isFinite(x)) return x > 0 ? "inf" : "-inf";
+    const view = new DataView(new ArrayBuffer(8));
+    view.setFloat64(0, x);
+    const hi = view.getUint32(0), lo = view.getUint32(4);
+    const sign = hi >>> 31 ? "-" : "";
+    const biased = (hi >>> 20) & 0x7ff;
+    const digits = ((hi & 0xfffff).toString(16).padStart(5, "0") + lo.toString(16).padStart(8, "0")).replace(/0+$/, "");
+    if (biased === 0 && digits === "") return sign + "0x0p+0";
+    const exponent = (biased === 0 ? 1 : biased) - 1023;
+    return sign + "0x" + (biased === 0 ? "0" : "1") + (digits ? "." + digits : "") + "p" + (exponent >= 0 ? "+" : "") + exponent;
+  }
+  function num(x) { return Number.isInteger(x) ? String(x) : x.toPrecision(17).replace(/0+$/, ""); }
+  function short(x) { return (Math.abs(x) < 1e-12 ? 0 : x).toFixed(4); }
+  function gizmoName(run, id) { return id < 0 ? "none" : run.gizmoNames[id] || ("#" + id); }
+  function esc(s) { return String(s).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;"); }
+
+  // ---- Colours --------------------------------------------------------------------------------
+  const KIND_COLOUR = ["#ff5a5a", "#c77dff", "#4dd0e1", "#ffb74d", "#5a6577", "#81c784", "#6f7d94", "#3b4454"];
+  const KIND_LANE = [0, 1, 1, 1, 2, 1, 2, 2];  // collisions, other notable events, routine events
+  const BALL_COLOURS = ["#f4f4f4", "#ffe066", "#7fd1ff", "#ff9ecb", "#a5ffb0", "#ffb27a"];
+  const SECOND_RUN = "#ff8c42";
+  const GIZMO_FILL = { square: "#d9534f", triangle: "#3e7cd6", circle: "#3fae5a", absorber: "#8e4aa3" };
+
+  // ---- The player's state ---------------------------------------------------------------------
+  const ui = {
+    board: document.getElementById("board"), timeline: document.getElementById("timeline"),
+    zoom: document.getElementById("zoom"), play: document.getElementById("play"),
+    speed: document.getElementById("speed"), filter: document.getElementById("filter"),
+    seek: document.getElementById("seek"), eventNumber: document.getElementById("event-number"),
+    clock: document.getElementById("clock"), details: document.getElementById("details"),
+    probe: document.getElementById("probe"),
+  };
+  const state = { t: 0, done: 0, playing: false, selected: -1, zoomSpan: 0.25, lastFrame: 0, drawn: [] };
+
+  function seekTime(t) {
+    state.t = Math.min(endTime, Math.max(0, t));
+    state.done = eventsBy(main, state.t);
+    redraw();
+  }
+  // The board after n events: at the time of the n-th, with exactly n run.
+  function seekEvents(n) {
+    n = Math.min(main.count, Math.max(0, Math.floor(n)));
+    state.done = n;
+    state.t = n > 0 ? main.time[n - 1] : 0;
+    redraw();
+  }
+  function selectEvent(k) {
+    if (k < 0 || k >= main.count) return;
+    state.selected = k;
+    seekEvents(k + 1);
+    showDetails(k);
+  }
+  function passes(k) {
+    const f = ui.filter.value;
+    if (f === "collision") return main.kind[k] === 0;
+    if (f === "notable") return KIND_LANE[main.kind[k]] !== 2;
+    return true;
+  }
+  function stepEvent(direction) {
+    pause();
+    let k = direction > 0 ? state.done : state.done - 2;
+    while (k >= 0 && k < main.count && !passes(k)) k += direction;
+    if (k >= 0 && k < main.count) selectEvent(k);
+  }
+  function play() {
+    if (state.t >= endTime) seekTime(0);
+    state.playing = true;
+    state.lastFrame = performance.now();
+    ui.play.textContent = "pause";
+    requestAnimationFrame(frame);
+  }
+  function pause() { state.playing = false; ui.play.textContent = "play"; }
+  function frame(now) {
+    if (!state.playing) return;
+    const dt = Math.min(0.25, (now - state.lastFrame) / 1000);  // a hidden tab does not jump ahead
+    state.lastFrame = now;
+    seekTime(state.t + dt * Number(ui.speed.value));
+    if (state.t >= endTime) { pause(); return; }
+    requestAnimationFrame(frame);
+  }
+
+  // ---- Drawing the board ----------------------------------------------------------------------
+  const view = { scale: 1, margin: 0.3 };
+  function fitCanvas(canvas, width, height) {
+    const ratio = window.devicePixelRatio || 1;
+    canvas.style.width = width + "px";
+    canvas.style.height = height + "px";
+    canvas.width = Math.max(1, Math.round(width * ratio));
+    canvas.height = Math.max(1, Math.round(height * ratio));
+    const ctx = canvas.getContext("2d");
+    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
+    return ctx;
+  }
+  function layout() {
+    const stage = document.getElementById("stage");
+    const side = Math.max(120, Math.min(stage.clientWidth, stage.clientHeight));
+    view.ctx = fitCanvas(ui.board, side, side);
+    view.scale = side / (board.size + 2 * view.margin);
+    view.timeline = fitCanvas(ui.timeline, ui.timeline.clientWidth, ui.timeline.clientHeight);
+    view.zoom = fitCanvas(ui.zoom, ui.zoom.clientWidth, ui.zoom.clientHeight);
+    view.bins = null;
+    redraw();
+  }
+
+  function drawBoard() {
+    const ctx = view.ctx;
+    const w = ui.board.clientWidth;
+    ctx.save();
+    ctx.clearRect(0, 0, w, w);
+    ctx.translate(view.margin * view.scale, view.margin * view.scale);
+    ctx.scale(view.scale, view.scale);
+    ctx.fillStyle = "#141a23";
+    ctx.fillRect(0, 0, board.size, board.size);
+    ctx.lineWidth = 0.06;
+    ctx.strokeStyle = "#8a93a6";
+    ctx.strokeRect(0, 0, board.size, board.size);
+    board.gizmos.forEach((g, i) => drawGizmo(ctx, g, i + 1));
+    state.drawn = [];
+    runs.forEach((run, r) => {
+      const done = r === 0 ? state.done : eventsBy(run, state.t);
+      run.balls.forEach((ball, b) => {
+        drawTrail(ctx, run, ball, r, b);
+        const at = ballAt(run, ball, state.t, done);
+        drawBall(ctx, at, r, b);
+        if (r === 0) state.drawn.push({ name: ball.name, x: at.x, y: at.y, vx: at.vx, vy: at.vy });
+      });
+    });
+    drawHits(ctx);
+    ctx.restore();
+  }
+
+  function drawGizmo(ctx, g, id) {
+    if (g.type === "left-flipper" || g.type === "right-flipper") {
+      const theta = flipperAngle(main, id, g, state.t, state.done);
+      ctx.strokeStyle = "#f0a030";
+      ctx.lineCap = "round";
+      ctx.lineWidth = 2 * g.radius;
+      ctx.beginPath();
+      ctx.moveTo(g.pivot[0], g.pivot[1]);
+      ctx.lineTo(g.pivot[0] + g.length * Math.cos(theta), g.pivot[1] + g.length * Math.sin(theta));
+      ctx.stroke();
+      ctx.fillStyle = "#7a4c0c";
+      ctx.beginPath();
+      ctx.arc(g.pivot[0], g.pivot[1], 0.07, 0, 2 * Math.PI);
+      ctx.fill();
+      return;
+    }
+    ctx.fillStyle = GIZMO_FILL[g.type] || "#888";
+    ctx.beginPath();
+    if (g.type === "circle") ctx.arc(g.centre[0], g.centre[1], g.radius, 0, 2 * Math.PI);
+    else g.polygon.forEach((p, i) => (i ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
+    ctx.closePath();
+    ctx.fill();
+  }
+
+  function ballColour(r, b) { return r === 0 ? BALL_COLOURS[b % BALL_COLOURS.length] : SECOND_RUN; }
+
+  function drawBall(ctx, at, r, b) {
+    ctx.beginPath();
+    ctx.arc(at.x, at.y, board.ball_radius, 0, 2 * Math.PI);
+    if (r === 0) {
+      ctx.fillStyle = ballColour(r, b);
+      ctx.fill();
+      ctx.lineWidth = 0.03;
+      ctx.strokeStyle = "#222";
+      ctx.stroke();
+    } else {
+      ctx.lineWidth = 0.07;
+      ctx.strokeStyle = SECOND_RUN;
+      ctx.stroke();
+    }
+  }
+
+  // The last half second of each ball's path, sampled on its true pieces.
+  const TRAIL_SECONDS = 0.5, TRAIL_SAMPLES = 48;
+  function drawTrail(ctx, run, ball, r, b) {
+    const from = Math.max(0, state.t - TRAIL_SECONDS);
+    if (state.t <= from) return;
+    ctx.beginPath();
+    for (let s = 0; s <= TRAIL_SAMPLES; s++) {
+      const t = s === TRAIL_SAMPLES ? state.t : from + (state.t - from) * s / TRAIL_SAMPLES;
+      const done = s === TRAIL_SAMPLES && r === 0 ? state.done : eventsBy(run, t);
+      const at = ballAt(run, ball, t, done);
+      if (s) ctx.lineTo(at.x, at.y); else ctx.moveTo(at.x, at.y);
+    }
+    ctx.strokeStyle = ballColour(r, b);
+    ctx.globalAlpha = 0.35;
+    ctx.lineWidth = 0.08;
+    ctx.lineJoin = "round";
+    ctx.stroke();
+    ctx.globalAlpha = 1;
+  }
+
+  // A ring where each recent collision happened, fading over 0.2 s.
+  function drawHits(ctx) {
+    const fade = 0.2;
+    for (let k = state.done - 1, shown = 0; k >= 0 && shown < 64 && main.time[k] > state.t - fade; k--) {
+      if (main.kind[k] !== 0) continue;
+      for (const ball of main.balls) {
+        const i = countAtMost(ball.event, ball.count, k) - 1;
+        if (i < 0 || ball.event[i] !== k || !ball.logged[i]) continue;
+        ctx.globalAlpha = 1 - (state.t - main.time[k]) / fade;
+        ctx.strokeStyle = KIND_COLOUR[0];
+        ctx.lineWidth = 0.06;
+        ctx.beginPath();
+        ctx.arc(ball.p[2 * i], ball.p[2 * i + 1], board.ball_radius + 0.12, 0, 2 * Math.PI);
+        ctx.stroke();
+        shown++;
+      }
+    }
+    ctx.globalAlpha = 1;
+  }
+
+  // ---- The timelines --------------------------------------------------------------------------
+  // The whole run: one column per pixel and three lanes (collisions; other notable events;
+  // friction ticks, recalculations and ends of tick). A column shows a lane's mark when any
+  // event of that lane falls in it, so every event is marked however many there are.
+  function timelineBins(width) {
+    const bins = new Uint16Array(width * 3);  // per column and lane: 1 + the first kind seen
+    for (let k = 0; k < main.count; k++) {
+      const kind = main.kind[k];
+      const col = Math.min(width - 1, Math.floor(main.time[k] / endTime * width));
+      const slot = col * 3 + KIND_LANE[kind];
+      if (!bins[slot] || kind === 0) bins[slot] = kind + 1;
+    }
+    return bins;
+  }
+  function laneY(lane, height) { return 4 + lane * (height - 8) / 3; }
+
+  function drawTimeline() {
+    const ctx = view.timeline, w = ui.timeline.clientWidth, h = ui.timeline.clientHeight;
+    if (!view.bins || view.bins.length !== w * 3) view.bins = timelineBins(w);
+    ctx.clearRect(0, 0, w, h);
+    ctx.fillStyle = "#151b24";
+    ctx.fillRect(0, 0, w, h);
+    const laneH = (h - 8) / 3 - 2;
+    for (let col = 0; col < w; col++)
+      for (let lane = 0; lane < 3; lane++) {
+        const kind = view.bins[col * 3 + lane] - 1;
+        if (kind < 0) continue;
+        ctx.fillStyle = KIND_COLOUR[kind];
+        ctx.fillRect(col, laneY(lane, h), 1, laneH);
+      }
+    markParting(ctx, (t) => t / endTime * w, h);
+    ctx.fillStyle = "#ffffff";
+    ctx.fillRect(Math.round(state.t / endTime * w) - 1, 0, 2, h);
+  }
+
+  function markParting(ctx, x, h) {
+    if (!data.parting) return;
+    ctx.strokeStyle = "#ff3b3b";
+    ctx.setLineDash([4, 3]);
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    ctx.moveTo(x(data.parting.time), 0);
+    ctx.lineTo(x(data.parting.time), h);
+    ctx.stroke();
+    ctx.setLineDash([]);
+  }
+
+  // The moments around the current time: each event its own tick, the selected one outlined.
+  const MAX_TICKS = 5000;
+  function zoomWindow() { return [state.t - state.zoomSpan / 2, state.t + state.zoomSpan / 2]; }
+  function drawZoom() {
+    const ctx = view.zoom, w = ui.zoom.clientWidth, h = ui.zoom.clientHeight;
+    const [from, to] = zoomWindow();
+    const x = (t) => (t - from) / (to - from) * w;
+    ctx.clearRect(0, 0, w, h);
+    ctx.fillStyle = "#111720";
+    ctx.fillRect(0, 0, w, h);
+    const first = countBelow(main.time, main.count, from), last = countAtMost(main.time, main.count, to);
+    const laneH = (h - 18) / 3 - 2;
+    const dense = last - first > MAX_TICKS;
+    for (let k = first; k < last; k += dense ? Math.ceil((last - first) / MAX_TICKS) : 1) {
+      ctx.fillStyle = KIND_COLOUR[main.kind[k]];
+      ctx.fillRect(Math.floor(x(main.time[k])), 4 + KIND_LANE[main.kind[k]] * (h - 18) / 3, dense ? 1 : 2, laneH);
+    }
+    if (state.selected >= first && state.selected < last) {
+      ctx.strokeStyle = "#ffffff";
+      ctx.lineWidth = 1;
+      ctx.strokeRect(Math.floor(x(main.time[state.selected])) - 2, 2, 6, h - 16);
+    }
+    markParting(ctx, x, h);
+    ctx.fillStyle = "#ffffff";
+    ctx.fillRect(Math.round(x(state.t)), 0, 1, h);
+    ctx.fillStyle = "#8893a5";
+    ctx.font = "11px system-ui, sans-serif";
+    ctx.fillText(from.toFixed(4) + " s", 4, h - 3);
+    const label = (dense ? "every " + Math.ceil((last - first) / MAX_TICKS) + "th of " : "") + (last - first) +
+      " events in " + num(+(to - from).toPrecision(3)) + " s (wheel to zoom)";
+    ctx.fillText(label, w / 2 - ctx.measureText(label).width / 2, h - 3);
+    const right = to.toFixed(4) + " s";
+    ctx.fillText(right, w - 4 - ctx.measureText(right).width, h - 3);
+  }
+
+  // ---- Text beside the board --------------------------------------------------------------------
+  function drawClock() {
+    ui.clock.textContent = "t = " + state.t.toFixed(6) + " s · " + state.done + " / " + main.count + " events";
+    ui.seek.value = String(Math.round(state.t / endTime * 100000));
+    if (document.activeElement !== ui.eventNumber) ui.eventNumber.value = String(state.done);
+  }
+
+  // One report made while an event ran: [decision type, rule, x, y] (render_run_track.hpp).
+  function noteText(run, note) {
+    const [typeNumber, rule, x, y] = note;
+    const type = names.decisions[typeNumber];
+    if (type === "trigger") return "trigger " + esc(gizmoName(run, x)) + " → " + esc(gizmoName(run, y));
+    if (type === "action") return "action " + esc(gizmoName(run, x));
+    if (type === "input") return "input key " + x + (y ? " up" : " down");
+    const other = y >= 0 ? " with " + esc(gizmoName(run, y)) : "";
+    return "rule " + esc(names.rules[rule]) + ": " + esc(gizmoName(run, x)) + other;
+  }
+
+  function showDetails(k) {
+    const run = main;
+    const kind = names.kinds[run.kind[k]];
+    const rows = [["time", num(run.time[k]) + " s"], ["exact time", hexFloat(run.time[k])], ["kind", kind]];
+    if (kind !== "input") {
+      if (run.a[k] >= 0) rows.push(["a", esc(gizmoName(run, run.a[k]))]);
+      if (run.b[k] >= 0) rows.push(["b", esc(gizmoName(run, run.b[k]))]);
+      if (kind === "collision") rows.push(["feature", run.feature[k]]);
+    }
+    let html = "<h2>Event " + k + " (after it: " + (k + 1) + " events)</h2><table>" +
+      rows.map((r) => "<tr><td>" + r[0] + "</td><td>" + r[1] + "</td></tr>").join("") + "</table>";
+    // The balls the event changed: their recorded state, and the velocity they arrived with.
+    for (const ball of run.balls) {
+      const touched = run.a[k] === ball.id || (run.b[k] === ball.id && kind !== "input");
+      const i = countAtMost(ball.event, ball.count, k) - 1;
+      const own = i >= 0 && ball.event[i] === k && ball.logged[i] === 1;
+      if (!touched && !own) continue;
+      html += "<h2>" + esc(ball.name) + "</h2>";
+      if (!own) {
+        html += "<p class=\"note\">Its recorded state at this event is left out of the page: the path drawn stays within " +
+          run.tolerance + " L of it. <code>gizmo dump LOG --from " + num(run.time[k]) + " --to " + num(run.time[k]) +
+          "</code> shows it.</p>";
+        continue;
+      }
+      const before = i > 0 ? ballAt(run, ball, run.time[k], k) : null;
+      html += "<table><tr><td>position</td><td>" + num(ball.p[2 * i]) + ", " + num(ball.p[2 * i + 1]) + "</td></tr>" +
+        (before ? "<tr><td>velocity before</td><td>" + short(before.vx) + ", " + short(before.vy) + " <span class=\"note\">(from the path)</span></td></tr>" : "") +
+        "<tr><td>velocity after</td><td>" + num(ball.v[2 * i]) + ", " + num(ball.v[2 * i + 1]) + "</td></tr></table>";
+    }
+    const reports = run.notes.patterns[run.notes.index[k]];
+    if (reports.length) html += "<h2>Reports while it ran</h2><ul>" + reports.map((n) => "<li>" + noteText(run, n) + "</li>").join("") + "</ul>";
+    if (data.parting) {
+      const p = data.parting;
+      html += "<h2>Compared with " + esc(runs[1].label) + "</h2><p>" +
+        (run.time[k] < p.time ? "Before the runs part." : run.time[k] === p.time ? "Where the runs part." : "After the runs part.") + "</p>";
+    }
+    ui.details.innerHTML = html;
+  }
+
+  function describe() {
+    document.getElementById("title").textContent = runs.map((r) => r.label).join("  vs  ");
+    const parts = runs.map((r, i) =>
+      (runs.length > 1 ? (i ? "second (rings): " : "first: ") : "") + r.model + " model, " + r.precision + ", " +
+      r.count + " events over " + num(r.end) + " s" + (r.tolerance > 0 ? ", paths within " + r.tolerance + " L" : ""));
+    document.getElementById("summary").textContent = parts.join(" · ");
+    const warnings = runs.filter((r) => r.truncation).map((r) => r.label + ": " + r.truncation);
+    if (data.parting) {
+      const p = data.parting;
+      warnings.push("The runs part at t = " + num(p.time) + " s after " + p.matched_decisions + " alike decisions: " + p.where + ".");
+    } else if (runs.length > 1) {
+      warnings.push("The runs never part: every decision is alike.");
+    }
+    document.getElementById("warnings").textContent = warnings.join("  ");
+    const legend = document.getElementById("legend");
+    const items = [];
+    runs.forEach((run, r) => run.balls.forEach((ball, b) => {
+      items.push("<li><span class=\"swatch" + (r ? " ring" : "") + "\" style=\"background:" + ballColour(r, b) +
+        ";border-color:" + ballColour(r, b) + "\"></span>" + esc(ball.name) + (runs.length > 1 ? " (" + esc(run.label) + ")" : "") + "</li>");
+    }));
+    names.kinds.forEach((kind, i) => items.push("<li><span class=\"swatch\" style=\"background:" + KIND_COLOUR[i] +
+      ";border-radius:2px\"></span>" + esc(kind) + "</li>"));
+    legend.innerHTML = items.join("");
+  }
+
+  // What the page drew, for a test to read: the board after state.done events, bit for bit.
+  function writeProbe() {
+    ui.probe.textContent = JSON.stringify({
+      events: state.done, time: hexFloat(state.t),
+      balls: state.drawn.map((b) => ({ name: b.name, x: hexFloat(b.x), y: hexFloat(b.y), x_value: b.x, y_value: b.y })),
+    });
+  }
+
+  // Everything is drawn at once on every change: a page read right after it loads (the browser
+  // test) already shows the moment it asked for.
+  function redraw() {
+    if (!view.ctx) return;
+    drawBoard();
+    drawTimeline();
+    drawZoom();
+    drawClock();
+  }
+
+  // ---- Input ----------------------------------------------------------------------------------
+  function timeFromTimeline(ev) {
+    const rect = ui.timeline.getBoundingClientRect();
+    return (ev.clientX - rect.left) / rect.width * endTime;
+  }
+  let dragging = false;
+  ui.timeline.addEventListener("pointerdown", (ev) => { dragging = true; pause(); seekTime(timeFromTimeline(ev)); });
+  window.addEventListener("pointermove", (ev) => { if (dragging) seekTime(timeFromTimeline(ev)); });
+  window.addEventListener("pointerup", () => { dragging = false; });
+  ui.zoom.addEventListener("click", (ev) => {
+    const rect = ui.zoom.getBoundingClientRect();
+    const [from, to] = zoomWindow();
+    const t = from + (ev.clientX - rect.left) / rect.width * (to - from);
+    // The nearest event, if one is within a few pixels; else just go to that time.
+    const k = countAtMost(main.time, main.count, t);
+    let best = -1;
+    for (const c of [k - 1, k]) if (c >= 0 && c < main.count && (best < 0 || Math.abs(main.time[c] - t) < Math.abs(main.time[best] - t))) best = c;
+    pause();
+    if (best >= 0 && Math.abs(main.time[best] - t) / (to - from) * rect.width <= 6) selectEvent(best);
+    else seekTime(t);
+  });
+  ui.zoom.addEventListener("wheel", (ev) => {
+    ev.preventDefault();
+    state.zoomSpan = Math.min(endTime * 2, Math.max(1e-7, state.zoomSpan * (ev.deltaY > 0 ? 1.25 : 0.8)));
+    redraw();
+  }, { passive: false });
+  ui.seek.addEventListener("input", () => { pause(); seekTime(Number(ui.seek.value) / 100000 * endTime); });
+  ui.eventNumber.addEventListener("change", () => {
+    pause();
+    const n = Number(ui.eventNumber.value);
+    if (n >= 1) selectEvent(n - 1); else seekEvents(0);
+  });
+  ui.play.addEventListener("click", () => (state.playing ? pause() : play()));
+  document.getElementById("prev").addEventListener("click", () => stepEvent(-1));
+  document.getElementById("next").addEventListener("click", () => stepEvent(+1));
+  document.addEventListener("keydown", (ev) => {
+    if (ev.target instanceof HTMLInputElement || ev.target instanceof HTMLSelectElement) return;
+    if (ev.key === " ") { ev.preventDefault(); state.playing ? pause() : play(); }
+    else if (ev.key === "ArrowRight") { ev.preventDefault(); stepEvent(+1); }
+    else if (ev.key === "ArrowLeft") { ev.preventDefault(); stepEvent(-1); }
+  });
+  window.addEventListener("resize", layout);
+
+  // ---- Start ----------------------------------------------------------------------------------
+  // FILE#event=N opens the board after N events (and shows event N − 1); FILE#time=S at S seconds.
+  function openFragment() {
+    const m = /^#(event|time)=([0-9.eE+-]+)$/.exec(window.location.hash);
+    if (!m) return;
+    const value = Number(m[2]);
+    if (m[1] === "time") seekTime(value);
+    else if (value >= 1 && value <= main.count) selectEvent(value - 1);
+    else seekEvents(value);
+  }
+  // FILE#bench draws 300 moments spread over the run, as playback would, and writes how long the
+  // drawing took into #probe (docs/render.md: how smooth a large run plays).
+  function bench() {
+    const times = [];
+    for (let i = 0; i < 300; i++) {
+      const start = performance.now();
+      seekTime(endTime * (i + 0.5) / 300);
+      times.push(performance.now() - start);
+    }
+    times.sort((x, y) => x - y);
+    ui.probe.textContent = JSON.stringify({
+      load_ms: loadedAt - startedAt, frames: times.length,
+      median_ms: times[times.length >> 1], max_ms: times[times.length - 1],
+    });
+  }
+  describe();
+  layout();
+  const loadedAt = performance.now();
+  openFragment();
+  writeProbe();
+  if (window.location.hash === "#bench") bench();
+  window.addEventListener("hashchange", () => { openFragment(); writeProbe(); });
+})();

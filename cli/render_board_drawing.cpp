@@ -1,0 +1,77 @@
+// Board shapes for pictures, from the simulator's geometry (see render_board_drawing.hpp).
+#include "render_board_drawing.hpp"
+
+#include "gizmo/core/geometry/shapes.hpp"
+
+namespace gizmo::cli {
+namespace {
+
+const char* typeName(GizmoType type) {
+  switch (type) {
+    case GizmoType::Square: return "square";
+    case GizmoType::Circle: return "circle";
+    case GizmoType::Triangle: return "triangle";
+    case GizmoType::LeftFlipper: return "left-flipper";
+    case GizmoType::RightFlipper: return "right-flipper";
+    case GizmoType::Absorber: return "absorber";
+  }
+  return "square";
+}
+
+nlohmann::ordered_json point(const Vec2<double>& p) { return nlohmann::ordered_json::array({p.x, p.y}); }
+
+}  // namespace
+
+BoardDrawing drawingOf(const BoardSpec& board) {
+  BoardDrawing drawing;
+  drawing.balls = board.balls;
+  for (const GizmoSpec& g : board.gizmos) {
+    GizmoDrawing d;
+    d.name = g.name;
+    d.type = g.type;
+    const Shape<double> shape = restShape<double>(g);
+    if (g.type == GizmoType::LeftFlipper || g.type == GizmoType::RightFlipper) {
+      const FlipperLayout layout = flipperLayout(g.type, g.orientation);
+      d.pivot = Vec2<double>(g.x + layout.pivot.x, g.y + layout.pivot.y);
+      d.restQuarter = layout.restQuarter;
+      d.endQuarter = layout.endQuarter;
+      d.forwardSign = layout.forwardSign;
+      d.length = kFlipperLength;
+      d.radius = kFlipperRadius;
+    } else if (g.type == GizmoType::Circle) {
+      d.centre = shape.circles.front().centre;
+      d.radius = shape.circles.front().radius;
+    } else {
+      // A polygon's vertices are its zero-radius corner circles, in the order of its edges.
+      for (const CircleFeature<double>& corner : shape.circles) d.polygon.push_back(corner.centre);
+    }
+    drawing.gizmos.push_back(d);
+  }
+  return drawing;
+}
+
+nlohmann::ordered_json drawingJson(const BoardDrawing& drawing) {
+  nlohmann::ordered_json gizmos = nlohmann::ordered_json::array();
+  for (const GizmoDrawing& d : drawing.gizmos) {
+    nlohmann::ordered_json g{{"name", d.name}, {"type", typeName(d.type)}};
+    if (d.type == GizmoType::LeftFlipper || d.type == GizmoType::RightFlipper) {
+      g["pivot"] = point(d.pivot);
+      g["rest_quarter"] = d.restQuarter;
+      g["end_quarter"] = d.endQuarter;
+      g["forward_sign"] = d.forwardSign;
+      g["length"] = d.length;
+      g["radius"] = d.radius;
+    } else if (d.type == GizmoType::Circle) {
+      g["centre"] = point(d.centre);
+      g["radius"] = d.radius;
+    } else {
+      nlohmann::ordered_json polygon = nlohmann::ordered_json::array();
+      for (const Vec2<double>& p : d.polygon) polygon.push_back(point(p));
+      g["polygon"] = polygon;
+    }
+    gizmos.push_back(g);
+  }
+  return {{"size", drawing.size}, {"ball_radius", drawing.ballRadius}, {"gizmos", gizmos}};
+}
+
+}  // namespace gizmo::cli

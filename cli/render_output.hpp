@@ -1,0 +1,26 @@
+#pragma once
+// How `gizmo render` writes its files: whole or not at all (a temporary name, renamed at the
+// end), and the base64 text that carries binary arrays inside an HTML page.
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace gizmo::cli {
+
+// Writes `content` to a temporary file next to `path`, then renames it to `path`; throws
+// std::runtime_error (naming the path) when either step fails, leaving no file behind.
+void writeFileWhole(const std::string& path, const std::string& content);
+
+std::string base64(const std::uint8_t* bytes, std::size_t size);
+
+// An array's bytes as the page reads them (little-endian, as typed arrays are on every machine a
+// browser runs on that this project builds for).
+template <class T>
+std::string base64Of(const std::vector<T>& values) {
+  std::vector<std::uint8_t> bytes(values.size() * sizeof(T));
+  if (!bytes.empty()) std::memcpy(bytes.data(), values.data(), bytes.size());
+  return base64(bytes.data(), bytes.size());
+}
+
+}  // namespace gizmo::cli

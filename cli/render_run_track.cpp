@@ -1,0 +1,126 @@
+// One log read into the arrays the pictures and the player draw from (see render_run_track.hpp).
+#include "render_run_track.hpp"
+
+#include <memory>
+#include <optional>
+
+#include "gizmo/core/gizmos/absorber.hpp"
+#include <stdexcept>
+
+namespace gizmo::cli {
+namespace {
+
+Vec2<double> vec(const replay::Exact& x, const replay::Exact& y) { return Vec2<double>(x.value, y.value); }
+
+}  // namespace
+
+RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
+  RunTrack track;
+  track.model = log.header.model;
+  track.precision = log.header.precision;
+  track.duration = log.header.duration;
+  track.tolerance = tolerance;
+  track.truncation = log.reader.truncation();
+  track.gizmoNames = log.gizmoNames;
+
+  // The board as built at time 0: its parameters, and each ball's first state (a ball placed at
+  // rest in an absorber starts held there).
+  const std::unique_ptr<GameBoard<double>> board = buildBoard<double>(log.request.board, paramsFor<double>(log.request));
+  const PhysicsParams<double>& params = board->params();
+  std::map<GizmoId, std::size_t> ballIndex;
+  std::vector<BallPathBuilder> builders;
+  for (GizmoId id : board->ballIds()) {
+    const Ball<double>& ball = *board->gizmo(id).asBall();
+    PathPiece start;
+    start.p = ball.positionAt(0);
+    start.v = ball.velocityAt(0);
+    start.a = ball.acceleration();
+    start.logged = true;
+    ballIndex[id] = builders.size();
+    builders.emplace_back(track.model, params, tolerance, start, ball.captured());
+    track.balls.push_back(BallTrack{id, ball.name(), {}});
+  }
+  std::map<GizmoId, FlipperSwings> flippers;
+  std::map<GizmoId, Vec2<double>> hold;
+  const std::vector<GizmoSpec>& specs = log.request.board.gizmos;
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const GizmoId id = static_cast<GizmoId>(i + 1);  // 0 is the outer walls
+    if (id >= static_cast<GizmoId>(log.gizmoNames.size()) || log.gizmoNames[std::size_t(id)] != specs[i].name)
+      throw std::runtime_error("the log's gizmo names do not follow its board");
+    if (specs[i].type == GizmoType::LeftFlipper || specs[i].type == GizmoType::RightFlipper) flippers[id];
+    if (specs[i].type == GizmoType::Absorber) hold[id] = Absorber<double>(specs[i]).holdPosition();
+  }
+  auto builderOf = [&](GizmoId id) -> BallPathBuilder* {
+    const auto it = ballIndex.find(id);
+    return it == ballIndex.end() ? nullptr : &builders[it->second];
+  };
+
+  std::int64_t event = -1;
+  auto note = [&](const replay::DecisionView& d, std::int32_t x, std::int32_t y) {
+    if (event < 0) return;  // nothing reports before the first event
+    track.notes.push_back(EventNote{static_cast<std::uint32_t>(event), static_cast<std::uint8_t>(d.type),
+                                    static_cast<std::uint8_t>(d.rule), x, y});
+  };
+  replay::DecisionStream stream(log);
+  while (const std::optional<replay::DecisionView> d = stream.next()) {
+    const double now = d->time.value;
+    switch (d->type) {
+      case replay::DecisionType::Executed: {
+        if (d->eventIndex != track.eventTime.size()) throw std::runtime_error("the log's events are not numbered in order");
+        event = static_cast<std::int64_t>(d->eventIndex);
+        track.eventTime.push_back(now);
+        track.eventKind.push_back(static_cast<std::uint8_t>(d->kind));
+        track.eventA.push_back(d->a);
+        track.eventB.push_back(d->b);
+        track.eventFeature.push_back(d->feature);
+        for (BallPathBuilder& b : builders) b.step(event, now);
+        for (const replay::BallView& b : d->balls)
+          if (BallPathBuilder* builder = builderOf(b.ball))
+            builder->logged(event, now, vec(b.x, b.y), vec(b.vxBefore, b.vyBefore), vec(b.vx, b.vy));
+        if (d->kind == EventKind::Collision)
+          for (const replay::BallView& b : d->balls) track.collisionPoints.push_back(vec(b.x, b.y));
+        if (d->kind == EventKind::FlipperStop && flippers.count(d->a)) flippers[d->a].stopped(event, now);
+        break;
+      }
+      case replay::DecisionType::Action:
+        if (flippers.count(d->gizmo)) flippers[d->gizmo].action(event, now);
+        note(*d, d->gizmo, -1);
+        break;
+      case replay::DecisionType::Trigger: note(*d, d->gizmo, d->other); break;
+      case replay::DecisionType::Input: note(*d, d->key, d->direction == KeyDirection::Up ? 1 : 0); break;
+      case replay::DecisionType::Rule: {
+        BallPathBuilder* ball = builderOf(d->other);
+        if (d->rule == ModelRule::Captured && ball && hold.count(d->gizmo)) ball->captured(event, now, hold[d->gizmo]);
+        if (d->rule == ModelRule::Released && ball && hold.count(d->gizmo))
+          ball->released(event, now, hold[d->gizmo], Absorber<double>::fireVelocity());
+        if (d->rule == ModelRule::FlipperBlocked && flippers.count(d->gizmo)) flippers[d->gizmo].blocked(event, now);
+        // Every friction tick implies its friction rule: noting it would only repeat the event.
+        if (d->rule != ModelRule::FrictionApplied) note(*d, d->gizmo, d->other);
+        break;
+      }
+      default: break;  // scheduling, ticks and time moves draw nothing
+    }
+  }
+  track.endTime = track.eventTime.empty() ? 0.0 : track.eventTime.back();
+
+  // The state after the last event settles each ball's last piece.
+  std::optional<replay::StateView> end;
+  try {
+    replay::SeekTarget target;
+    target.events = track.eventTime.size();
+    end = replay::seekLog(log, target);
+  } catch (const std::exception&) {
+    end.reset();  // a log cut off inside its first chunk: the last pieces keep their default
+  }
+  for (std::size_t i = 0; i < builders.size(); ++i) {
+    std::optional<Vec2<double>> velocity;
+    if (end)
+      for (const replay::BallView& b : end->balls)
+        if (b.name == track.balls[i].name) velocity = vec(b.vx, b.vy);
+    track.balls[i].pieces = builders[i].finish(track.endTime, velocity);
+  }
+  for (auto& [id, swings] : flippers) track.flippers[id] = swings.visibleAnchors(tolerance, track.endTime);
+  return track;
+}
+
+}  // namespace gizmo::cli

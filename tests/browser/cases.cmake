@@ -1,0 +1,19 @@
+# The browser checks, shared by tests/browser/CMakeLists.txt and tests/browser/run.sh: each is a
+# name and the player_seek.cmake settings it runs with.
+set(GIZMO_BROWSER_FIXTURES ${CMAKE_CURRENT_LIST_DIR}/../../fixtures)
+# The spec's board with the flipper key script, every path piece kept: the ball is drawn at
+# exactly the state the log records.
+gizmo_browser_test(spec_example_collision
+  BOARD=${GIZMO_BROWSER_FIXTURES}/boards/spec-example.txt KEYS=${GIZMO_BROWSER_FIXTURES}/keys/flippers.keys
+  TIME=6 PICK=5 TOLERANCE=0)
+# The same run at the default tolerance (10^-3 L), later on: the thinned path stays that close.
+gizmo_browser_test(spec_example_thinned
+  BOARD=${GIZMO_BROWSER_FIXTURES}/boards/spec-example.txt KEYS=${GIZMO_BROWSER_FIXTURES}/keys/flippers.keys
+  TIME=6 PICK=9 WITHIN=0.001)
+# Two balls under gravity with every path piece kept: both are drawn exactly, the one the
+# collision did not touch at its position evaluated on its parabola.
+gizmo_browser_test(two_balls_every_piece
+  BOARD=${GIZMO_BROWSER_FIXTURES}/boards/verify/chaotic-bumpers.txt TIME=4 PICK=7 TOLERANCE=0)
+# The classic model (straight steps at every event, rebuilt by stepping as the board does).
+gizmo_browser_test(classic_model
+  BOARD=${GIZMO_BROWSER_FIXTURES}/boards/spec-example.txt TIME=6 PICK=5 TOLERANCE=0 MODEL=classic)

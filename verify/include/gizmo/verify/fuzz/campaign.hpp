@@ -1,0 +1,83 @@
+#pragma once
+// A fuzzing campaign: cases 0..count−1 of one seed, each a generated run checked against the
+// chosen properties, on several threads, one shard of the cases at a time if asked; failures
+// shrunk to a minimal run. Results are the same whatever the thread count and however the cases
+// are cut into shards: case k is generated from (seed, k) alone, and results are kept in case
+// order. Merging the shards' result folders gives what one unsharded run gives.
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "gizmo/core/run/run.hpp"
+#include "gizmo/verify/fuzz/properties.hpp"
+
+namespace gizmo::verify::fuzz {
+
+struct CampaignOptions {
+  std::vector<const Property*> properties;
+  std::uint64_t count = 100;
+  std::uint64_t seed = 1;
+  unsigned jobs = 1;
+  std::uint64_t shard = 0, shards = 1;  // this run takes the cases k with k % shards == shard
+  std::size_t shrinkBudget = 100;       // property checks spent minimising one failure
+  // Asked before each case: true stops the campaign (a wall-clock budget lives in the caller).
+  std::function<bool()> stop;
+  // Called after each case, from the worker threads but never two at once.
+  std::function<void(std::uint64_t done, std::uint64_t planned, std::uint64_t failures)> progress;
+};
+
+// One property on one case.
+struct CaseOutcome {
+  std::uint64_t index = 0;  // the case
+  std::uint64_t seed = 0;   // caseSeed(campaign seed, index)
+  int size = 0;
+  std::string property;
+  bool holds = true;
+  std::uint64_t fingerprint = 0;
+  // When it does not hold:
+  std::string message;     // for the minimal run
+  RunRequest minimal;
+  std::size_t shrinkSteps = 0;
+  std::string folder;      // where its files are, relative to the campaign's folder (once written)
+};
+
+struct CampaignResult {
+  std::uint64_t seed = 0, count = 0;
+  std::string properties;                     // comma-separated, in the order checked
+  std::vector<std::uint64_t> shardsIncluded;  // which shards of `shards` this holds
+  std::uint64_t shards = 1;
+  bool complete = true;  // false: stopped before every case of its shards ran
+  std::vector<CaseOutcome> outcomes;  // by case, then property
+};
+
+class CampaignError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The case's size: cases cycle through every size from 0 to kMaxSize.
+int caseSize(std::uint64_t index);
+RunRequest caseRun(std::uint64_t campaignSeed, std::uint64_t index);
+
+CampaignResult runCampaign(const CampaignOptions& options);
+
+std::uint64_t failureCount(const CampaignResult& r);
+// "seed 7, cases 0..39 of 40, 6 properties: 240 checks, 0 failures, digest 0123456789abcdef": the
+// same line for a run and for the merge of its shards.
+std::string summaryLine(const CampaignResult& r);
+
+// Writes dir/results.txt (one line per outcome) and, for each failure, a folder with the minimal
+// board (board.xml), its key script (keys.txt), its replay log (run.gzlog), what failed
+// (failure.txt) and the one-line command that checks it again (command.txt). `gizmo` is how the
+// command names the program. Throws CampaignError when dir cannot be written.
+void writeCampaign(CampaignResult& r, const std::string& dir, const std::string& gizmo);
+// Reads what writeCampaign wrote. Throws CampaignError (naming the file and line) when it is not.
+CampaignResult readCampaign(const std::string& dir);
+// One result from the shards of one campaign: same seed, count, properties and shard count, no
+// shard twice, every shard present. Throws CampaignError otherwise. Folders keep their place
+// (each outcome's folder is prefixed with the directory it came from).
+CampaignResult mergeCampaigns(const std::vector<std::pair<std::string, CampaignResult>>& parts);
+
+}  // namespace gizmo::verify::fuzz

@@ -1,0 +1,251 @@
+#include "gizmo/verify/fuzz/properties.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <vector>
+
+#include "gizmo/io/board_writer.hpp"
+#include "gizmo/io/diagnostics.hpp"
+#include "gizmo/io/key_script.hpp"
+#include "gizmo/io/text_reader.hpp"
+#include "gizmo/io/xml_reader.hpp"
+#include "gizmo/replay/replay.hpp"
+#include "gizmo/verify/fuzz/invariants.hpp"
+#include "gizmo/verify/fuzz/run_description.hpp"
+
+namespace gizmo::verify::fuzz {
+namespace {
+
+// FNV-1a, for fingerprints: the same bytes on every machine.
+struct Digest {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  void add(const void* data, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ static_cast<const unsigned char*>(data)[i]) * 0x100000001b3ULL;
+  }
+  template <class T>
+  void add(const T& value) { add(&value, sizeof value); }
+  void add(const std::string& s) { add(s.data(), s.size()); }
+};
+
+PropertyResult fromInvariant(const RunRequest& run, Invariant which) {
+  const InvariantRun r = checkInvariants<double>(run, {which});
+  Digest d;
+  d.add(r.events);
+  d.add(r.energy);
+  if (r.violations.empty()) return PropertyResult{true, "", d.h};
+  return PropertyResult{false, r.violations.front().message, d.h};
+}
+
+PropertyResult noTunnelling(const RunRequest& run) { return fromInvariant(run, Invariant::NoTunnelling); }
+PropertyResult energy(const RunRequest& run) { return fromInvariant(run, Invariant::Energy); }
+PropertyResult eventQueue(const RunRequest& run) { return fromInvariant(run, Invariant::EventQueue); }
+
+// A log file of its own in the system's temporary folder, removed when done with: the recorder
+// writes files, and cases run on many threads (and in many processes) at once.
+class TemporaryLog {
+ public:
+  TemporaryLog() {
+    static std::atomic<std::uint64_t> counter{0};
+    path_ = (std::filesystem::temp_directory_path() /
+             ("gizmo-fuzz-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".gzlog"))
+                .string();
+  }
+  ~TemporaryLog() {
+    std::error_code ignored;
+    std::filesystem::remove(path_, ignored);
+  }
+  TemporaryLog(const TemporaryLog&) = delete;
+  TemporaryLog& operator=(const TemporaryLog&) = delete;
+  const std::string& path() const { return path_; }
+  std::string bytes() const {
+    std::ifstream in(path_, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+
+ private:
+  std::string path_;
+};
+
+PropertyResult replayIdentity(const RunRequest& run) {
+  const PrecisionChoice precision{Precision::Double, 0};
+  TemporaryLog first, second;
+  {
+    replay::LogWriter sink(first.path());
+    replay::recordRun(run, precision, sink);
+  }
+  {
+    replay::LogWriter sink(second.path());
+    replay::recordRun(run, precision, sink);
+  }
+  const std::string bytes = first.bytes();
+  Digest d;
+  d.add(bytes);
+  if (bytes != second.bytes()) return PropertyResult{false, "recording the same run twice gave different logs", d.h};
+  const replay::ReplayReport report = replay::replayLog(replay::openLog(first.path()));
+  if (!report.identical) {
+    std::ostringstream m;
+    m << "the replay parts from the log after " << report.decisions << " decisions: " << report.where;
+    return PropertyResult{false, m.str(), d.h};
+  }
+  return PropertyResult{true, "", d.h};
+}
+
+PropertyResult roundTrip(const RunRequest& run) {
+  Digest d;
+  auto differs = [&](const std::string& format, const std::string& written,
+                     io::ReadResult (*read)(std::string_view, const std::string&)) -> std::optional<std::string> {
+    d.add(written);
+    try {
+      const io::ReadResult back = read(written, "written." + format);
+      if (const std::optional<std::string> diff = boardDifference(run.board, back.board))
+        return "board -> " + format + " -> board changed it: " + *diff;
+    } catch (const io::InputError& e) {
+      return "the " + format + " the board writer wrote does not read back: " + e.what();
+    }
+    return std::nullopt;
+  };
+  if (auto m = differs("xml", io::writeXmlBoard(run.board), &io::readXmlBoard)) return {false, *m, d.h};
+  if (auto m = differs("txt", io::writeTextBoard(run.board), &io::readTextBoard)) return {false, *m, d.h};
+  // The key script travels with a failing case's board, so it must round-trip too.
+  try {
+    const std::vector<io::KeyInput> keys = io::readKeyScript(writeKeyScript(run.keys), "written.keys");
+    bool same = keys.size() == run.keys.size();
+    for (std::size_t i = 0; same && i < keys.size(); ++i)
+      same = keys[i].time == run.keys[i].time && keys[i].key == run.keys[i].key && keys[i].direction == run.keys[i].direction;
+    if (!same) return {false, "key script -> text -> key script changed it", d.h};
+  } catch (const io::InputError& e) {
+    return {false, std::string("the key script written does not read back: ") + e.what(), d.h};
+  }
+  return {true, "", d.h};
+}
+
+// The physical decisions of a run, for comparing the two models: collisions, leaves, flipper
+// stops and inputs (with the balls they changed), triggers, actions and model rules. Bookkeeping
+// (recalculations, ends of ticks) is where the models legitimately differ.
+struct PhysicalDecision {
+  std::string what;
+  std::int32_t feature = -1;  // of a collision
+  double time = 0;
+  std::vector<double> values;  // positions and velocities after
+};
+
+class PhysicalTrace final : public BoardObserver<double> {
+ public:
+  std::vector<PhysicalDecision> decisions;
+  void eventExecuted(const Event<double>& e, const EventOutcome<double>& o) override {
+    if (e.kind == EventKind::Recalculate || e.kind == EventKind::EndOfTick || e.kind == EventKind::FrictionTick) return;
+    // Without the sequence number: the models' bookkeeping events take different numbers.
+    PhysicalDecision d{std::string(eventKindName(e.kind)) + " a=" + std::to_string(e.a) + " b=" + std::to_string(e.b),
+                       e.feature, e.time, {}};
+    for (const BallChange<double>& c : o.balls())
+      d.values.insert(d.values.end(), {c.position.x, c.position.y, c.velocityAfter.x, c.velocityAfter.y});
+    decisions.push_back(std::move(d));
+  }
+  void triggerFired(const double& t, GizmoId s, GizmoId g) override {
+    decisions.push_back({"trigger " + std::to_string(s) + " -> " + std::to_string(g), -1, t, {}});
+  }
+  void actionPerformed(const double& t, GizmoId g) override {
+    decisions.push_back({"action " + std::to_string(g), -1, t, {}});
+  }
+  void modelRuleApplied(const double& t, ModelRule r, GizmoId g, GizmoId o) override {
+    decisions.push_back({std::string(modelRuleName(r)) + " " + std::to_string(g) + " " + std::to_string(o), -1, t, {}});
+  }
+};
+
+// How far apart the two models' arithmetic may carry the same straight-line motion: their times
+// of impact solve different equations (a linear and a degenerate quadratic), each to a few ulps.
+constexpr double kModelTimeTolerance = 1e-9;   // s
+constexpr double kModelValueTolerance = 1e-6;  // L and L/s, relative to the value's size (at least 1)
+
+// Whether two decisions agree in their numbers: time, and the balls' positions and velocities.
+bool closeEnough(const PhysicalDecision& x, const PhysicalDecision& y) {
+  if (!(std::fabs(x.time - y.time) <= kModelTimeTolerance) || x.values.size() != y.values.size()) return false;
+  for (std::size_t k = 0; k < x.values.size(); ++k)
+    if (!(std::fabs(x.values[k] - y.values[k]) <= kModelValueTolerance * std::max(1.0, std::fabs(y.values[k]))))
+      return false;
+  return true;
+}
+
+// The two models must take the same decision whenever their states agree. Rounding differences
+// (a few ulps per event) are amplified by every collision between balls or with a round feature
+// (a dispersing billiard: roughly by travel/radius each time), so after enough of them the runs
+// part in their numbers, and from there they may legitimately decide differently. What must never
+// happen is a different decision from states that still agree: that is a model disagreeing.
+PropertyResult modelsAgree(const RunRequest& original) {
+  RunRequest run = withoutForces(original);
+  PhysicalTrace traces[2];
+  const MotionModel models[2] = {MotionModel::Classic, MotionModel::Ballistic};
+  for (int i = 0; i < 2; ++i) {
+    run.model = models[i];
+    try {
+      simulate<double>(run, &traces[i]);
+    } catch (const std::exception& e) {
+      return {false, std::string(motionModelName(models[i])) + " run stopped: " + e.what(), 0};
+    }
+  }
+  Digest digest;
+  const std::vector<PhysicalDecision>&c = traces[0].decisions, &b = traces[1].decisions;
+  auto show = [](const PhysicalDecision& d) {
+    return d.what + " feature=" + std::to_string(d.feature) + " at t=" + exact(d.time);
+  };
+  for (std::size_t i = 0; i < std::min(c.size(), b.size()); ++i) {
+    // A polygon's edge and the vertex at its end touched at one point are one contact with one
+    // normal: which feature index a model names for it is a tie broken by rounding, and only a
+    // different outcome makes it a different decision.
+    const bool sameFeature = c[i].feature == b[i].feature || closeEnough(c[i], b[i]);
+    if (c[i].what != b[i].what || !sameFeature || c[i].values.size() != b[i].values.size())
+      return {false,
+              "decision " + std::to_string(i) + " differs while the states agree: classic " + show(c[i]) + ", ballistic " +
+                  show(b[i]),
+              digest.h};
+    digest.add(c[i].what);
+    if (!closeEnough(c[i], b[i])) return {true, "", digest.h};  // parted by amplified rounding: compared enough
+  }
+  if (c.size() != b.size())
+    return {false,
+            "classic made " + std::to_string(c.size()) + " physical decisions, ballistic " + std::to_string(b.size()) +
+                (c.size() < b.size() ? "; ballistic's next: " + show(b[c.size()]) : "; classic's next: " + show(c[b.size()])),
+            digest.h};
+  return {true, "", digest.h};
+}
+
+constexpr Property kProperties[] = {
+    {"no-tunnelling", "no ball inside a gizmo or beyond a wall, at every event and between events", &noTunnelling},
+    {"energy", "energy rises only by what flipper hits and absorber shots supply; friction ticks slow balls", &energy},
+    {"event-queue", "time never goes back; the queue holds exactly the pending events; every moving ball is covered",
+     &eventQueue},
+    {"replay-identity", "recording twice gives the same log, and replaying it gives the same decisions", &replayIdentity},
+    {"round-trip", "board -> XML -> board and board -> text -> board give the same board; key scripts too", &roundTrip},
+    {"models-agree", "with gravity and friction 0, classic and ballistic make the same decisions", &modelsAgree},
+};
+
+}  // namespace
+
+std::span<const Property> allProperties() { return kProperties; }
+
+const Property* findProperty(std::string_view name) {
+  for (const Property& p : kProperties)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+std::string propertyNames() {
+  std::string s;
+  for (const Property& p : kProperties) s += (s.empty() ? "" : ", ") + std::string(p.name);
+  return s;
+}
+
+RunRequest withoutForces(const RunRequest& run) {
+  RunRequest r = run;
+  r.board.gravity = 0;
+  r.board.mu = r.board.mu2 = 0;
+  return r;
+}
+
+}  // namespace gizmo::verify::fuzz
