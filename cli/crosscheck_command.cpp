@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -11,12 +12,13 @@
 #include "gizmo/verify/box2d_crosscheck.hpp"
 #include "gizmo/verify/box2d_mapping.hpp"
 #include "gizmo/verify/box2d_time_of_impact.hpp"
+#include "render_output.hpp"
+#include "render_path_file.hpp"
 
 namespace gizmo::cli {
 namespace {
 
 constexpr double kMinStep = 1e-5, kMaxStep = 0.1;
-constexpr double kMaxBox2dSteps = 1e7;  // summed over the step sizes
 
 // A whole number text as a double, or nullopt (no trailing characters, finite).
 std::optional<double> parseNumber(const std::string& text) {
@@ -41,8 +43,8 @@ bool parseSteps(const std::string& list, double duration, std::vector<double>& o
   std::string item;
   double total = 0;
   while (std::getline(in, item, ',')) {
-    const std::optional<double> dt = parseStep(item);
-    if (!dt || !(*dt >= kMinStep && *dt <= kMaxStep)) {
+    const std::optional<double> dt = parseStepSize(item);
+    if (!dt) {
       std::cerr << "gizmo crosscheck: --dt '" << item << "' is not a step size from 1e-5 to 0.1 s (a number or 1/N)\n";
       return false;
     }
@@ -136,6 +138,7 @@ void printRunsJson(const CheckedRun& run, const CrosscheckCommandOptions& o, con
                                        {"energy_start", r.energyStart},
                                        {"energy_end", r.ourEnergyEnd}}},
                              {"steps", steps}};
+  if (!o.pathOut.empty()) out["path_out"] = o.pathOut;
   std::cout << out.dump(2) << '\n';
 }
 
@@ -152,6 +155,9 @@ void printRunsText(const CheckedRun& run, const CrosscheckCommandOptions& o, con
               "           at most %g L and %g rad per step\n",
               verify::kBox2dPolygonSkin, 3 * verify::kBox2dLinearSlop, verify::kBox2dToiTolerance,
               verify::kBox2dMaxTranslation, verify::kBox2dMaxRotation);
+  if (!o.pathOut.empty())
+    std::printf("path       %s: Box2D's ball centres after every step (gizmo render LOG -o run.html --compare %s)\n",
+                o.pathOut.c_str(), o.pathOut.c_str());
   std::printf("\n%-10s %7s %6s %7s %8s %8s %10s %10s %9s %6s %7s %9s %9s %9s %8s\n", "dt", "steps", "box2d", "matched",
               "missed", "missed", "max dt", "mean dt", "max dpos", "in-toi", "capped", "div>0.1", "max div", "dE/E",
               "wall s");
@@ -208,7 +214,31 @@ int toiSurveyCommand(const CrosscheckCommandOptions& o) {
   return kExitOk;
 }
 
+// Box2D's run at the one step size asked for, as a path file (render_path_file.hpp), written
+// whole before the report is printed, so that a failed write leaves neither.
+bool writePath(const CheckedRun& run, const CrosscheckCommandOptions& o, const verify::CrosscheckOptions& options,
+               const verify::CrosscheckReport& report) {
+  verify::Box2dOptions box2d = options.box2d;
+  box2d.dt = report.steps.front().dt;
+  // Only the board's file name: the path file may travel to another machine.
+  const std::string boardName = std::filesystem::path(run.boardName).filename().string();
+  const PathFile file = box2dPathFile(run.request, boardName, box2d, report.steps.front().box2dSamples);
+  try {
+    writeFileWhole(o.pathOut, pathFileText(file));
+  } catch (const std::exception& e) {
+    std::cerr << "gizmo crosscheck: " << e.what() << '\n';
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+std::optional<double> parseStepSize(const std::string& text) {
+  const std::optional<double> dt = parseStep(text);
+  if (!dt || !(*dt >= kMinStep && *dt <= kMaxStep)) return std::nullopt;
+  return dt;
+}
 
 int crosscheckCommand(const CrosscheckCommandOptions& o) {
   if (!(o.restitutionThreshold >= 0 && o.restitutionThreshold <= 1000)) {
@@ -219,6 +249,10 @@ int crosscheckCommand(const CrosscheckCommandOptions& o) {
     std::cerr << "gizmo crosscheck: --toi-sweeps must be from 0 to 1000000\n";
     return kExitBadInput;
   }
+  if (o.toiSweeps > 0 && !o.pathOut.empty()) {
+    std::cerr << "gizmo crosscheck: --path-out writes the path of a whole run, not of --toi-sweeps\n";
+    return kExitBadInput;
+  }
   if (o.toiSweeps > 0) return toiSurveyCommand(o);
   CheckedRun run;
   int code = kExitOk;
@@ -227,9 +261,15 @@ int crosscheckCommand(const CrosscheckCommandOptions& o) {
   options.request = run.request;
   options.steps.clear();
   if (!parseSteps(o.steps, o.run.time, options.steps)) return kExitBadInput;
+  if (!o.pathOut.empty() && options.steps.size() != 1) {
+    std::cerr << "gizmo crosscheck: --path-out writes the path of one step size: give --dt one (for example --dt 1/240)\n";
+    return kExitBadInput;
+  }
   options.box2d.bullet = !o.noBullet;
   options.box2d.restitutionThreshold = o.restitutionThreshold;
+  options.keepBox2dSamples = !o.pathOut.empty();
   const verify::CrosscheckReport report = verify::crosscheck(options);
+  if (!o.pathOut.empty() && !writePath(run, o, options, report)) return kExitBadInput;
   if (o.run.json) printRunsJson(run, o, options, report);
   else printRunsText(run, o, options, report);
   return kExitOk;

@@ -3,6 +3,7 @@
 // collision by collision; or, with --toi-sweeps, our times of impact against b2TimeOfImpact on
 // seeded random single contacts.
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "run_options.hpp"
@@ -18,7 +19,13 @@ struct CrosscheckCommandOptions {
   double restitutionThreshold = 0;
   int toiSweeps = 0;       // > 0: the time-of-impact survey instead of whole runs
   std::uint64_t seed = 1;  // the survey's seed
+  std::string pathOut;     // writes Box2D's ball paths here (one step size only): render_path_file.hpp
 };
 int crosscheckCommand(const CrosscheckCommandOptions& options);
+
+// A Box2D step size, "0.01" or "1/60", from 1e-5 to 0.1 s; nullopt for anything else.
+std::optional<double> parseStepSize(const std::string& text);
+// Box2D steps one command may ask for, summed over its step sizes.
+inline constexpr double kMaxBox2dSteps = 1e7;
 
 }  // namespace gizmo::cli

@@ -105,6 +105,8 @@ int main(int argc, char** argv) {
   crosscheckCmd->add_option("--toi-sweeps", crosscheck.toiSweeps,
                             "Compare times of impact on this many seeded random sweeps per feature kind instead");
   crosscheckCmd->add_option("--seed", crosscheck.seed, "The sweeps' seed")->capture_default_str();
+  crosscheckCmd->add_option("--path-out", crosscheck.pathOut,
+                            "Write Box2D's ball paths (one --dt) to this file, for gizmo render LOG --compare FILE");
   crosscheckCmd->add_flag("--json", crosscheck.run.json, "Print one JSON object");
   crosscheckCmd->callback([&] { code = crosscheckCommand(crosscheck); });
 
@@ -143,6 +145,7 @@ int main(int argc, char** argv) {
   studyCmd->add_option("--scenes", study.scenes, "A folder holding suite.txt (default: the built-in fixtures/study)");
   studyCmd->add_option("--out", study.out, "The folder to write into")->capture_default_str();
   studyCmd->add_flag("--quick", study.quick, "A small plan on the scenes with a quick duration: a couple of minutes");
+  studyCmd->add_option("--bench", study.bench, "gizmo_bench --benchmark_format=json output to chart beside the runs (repeatable)");
   studyCmd->callback([&] { code = studyCommand(study); });
 
   RenderOptions render;
@@ -153,7 +156,9 @@ int main(int argc, char** argv) {
                 "Example: gizmo render run.gzlog -o run.html --compare run-mpfr.gzlog");
   renderCmd->add_option("input", render.input, "The log to play, or the board (or log) to draw");
   renderCmd->add_option("-o,--output", render.output, "The file to write: .html or .svg")->required();
-  renderCmd->add_option("--compare", render.compare, "Player: a second log of the same board, laid over the first");
+  renderCmd->add_option("--compare", render.compare,
+                        "Player: a second log of the same board, a path file (gizmo crosscheck --path-out) or\n"
+                        "box2d:STEP (Box2D run here at that step size), laid over the first");
   renderCmd->add_option("--trace", render.trace, "Picture: draw this log's ball paths and collision points");
   renderCmd->add_option("--tolerance", render.tolerance,
                         "Leave out ball path pieces that stay this close (L) to the one before (default 1e-3; 0 keeps all)");

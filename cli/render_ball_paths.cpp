@@ -82,34 +82,22 @@ void BallPathBuilder::logged(std::int64_t event, double t, const Vec2<double>& p
       pending_.front().piece.v = velocity;
     }
   }
-  PathPiece next;
-  next.event = event;
-  next.t0 = t;
-  next.p = p;
-  next.v = vAfter;
-  next.logged = true;
-  push(Pending{next, vBefore, false});
+  anchor(event, t, p, vAfter, vBefore, false);
 }
 
 void BallPathBuilder::captured(std::int64_t event, double t, const Vec2<double>& p) {
   captured_ = true;
-  PathPiece held;
-  held.event = event;
-  held.t0 = t;
-  held.p = p;
-  held.logged = true;
-  push(Pending{held, std::nullopt, true});
+  anchor(event, t, p, Vec2<double>(), std::nullopt, true);
 }
 
 void BallPathBuilder::released(std::int64_t event, double t, const Vec2<double>& p, const Vec2<double>& v) {
   captured_ = false;
-  PathPiece fired;
-  fired.event = event;
-  fired.t0 = t;
-  fired.p = p;
-  fired.v = v;
-  fired.logged = true;
-  push(Pending{fired, std::nullopt, false});
+  anchor(event, t, p, v, std::nullopt, false);
+}
+
+void BallPathBuilder::anchor(std::int64_t event, double t, const Vec2<double>& p, const Vec2<double>& v,
+                             const std::optional<Vec2<double>>& vBefore, bool held) {
+  push(Pending{PathPiece{.event = event, .t0 = t, .p = p, .v = v, .a = {}, .logged = true}, vBefore, held});
 }
 
 void BallPathBuilder::push(const Pending& next) {

@@ -50,6 +50,9 @@ class BallPathBuilder {
     std::optional<Vec2<double>> vBefore;  // the recorded velocity on arrival, when known
     bool captured = false;
   };
+  // A state the log gives (or an absorber sets: `held` when it takes the ball) starts a piece.
+  void anchor(std::int64_t event, double t, const Vec2<double>& p, const Vec2<double>& v,
+              const std::optional<Vec2<double>>& vBefore, bool held);
   void push(const Pending& next);
   // Settles the first `count` pending pieces (each one's acceleration from the next one's arrival).
   void flush(std::size_t count, double endOfLast, const std::optional<Vec2<double>>& finalVBefore);

@@ -3,15 +3,20 @@
 #include "render_command.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <string_view>
 
 #include "board_input.hpp"
+#include "crosscheck_command.hpp"
 #include "gizmo/io/board_writer.hpp"
 #include "log_view.hpp"
 #include "render_board_svg.hpp"
 #include "render_output.hpp"
+#include "render_path_file.hpp"
+#include "render_path_overlay.hpp"
 #include "render_player_html.hpp"
 
 namespace gizmo::cli {
@@ -47,6 +52,77 @@ std::optional<Parting> partingOf(const replay::OpenedLog& first, const replay::O
   return p;
 }
 
+// What --compare names: another log, a path file, or Box2D run here.
+struct Comparison {
+  std::optional<replay::OpenedLog> log;
+  std::optional<PathFile> path;
+  std::string label;
+};
+
+constexpr std::string_view kBox2dPrefix = "box2d:";
+
+// Box2D's run of the log's own request (board, keys, model, duration) at the step size asked for,
+// with crosscheck's defaults (bullets, restitution threshold 0).
+int box2dComparison(const replay::OpenedLog& log, const std::string& step, Comparison& out) {
+  const std::optional<double> dt = parseStepSize(step);
+  if (!dt) return fail("--compare box2d:" + step + ": not a step size from 1e-5 to 0.1 s (a number or 1/N)");
+  if (log.request.duration / *dt > kMaxBox2dSteps)
+    return fail("--compare box2d:" + step + ": the log's run is too long for that step size (more than 1e7 Box2D steps)");
+  verify::Box2dOptions options;
+  options.dt = *dt;
+  const verify::RunRecord run = verify::runBox2d(log.request, options);
+  out.path = box2dPathFile(log.request, "", options, run.samples);
+  out.label = "Box2D at " + step + " s";
+  return kExitOk;
+}
+
+int pathComparison(const replay::OpenedLog& log, const RenderOptions& o, Comparison& out) {
+  try {
+    out.path = readPathFile(o.compare);
+  } catch (const PathFileError& e) {
+    return fail(e.what());
+  }
+  if (out.path->boardChecksum != log.header.boardHash) {
+    const std::string theirs = (out.path->boardName.empty() ? "" : out.path->boardName + ", ") + "checksum " +
+                               checksumText(out.path->boardChecksum);
+    return fail(o.compare + ": a path of another board (" + theirs + ") than " + o.input + "'s (checksum " +
+                checksumText(log.header.boardHash) + "); gizmo crosscheck BOARD --dt STEP --path-out FILE makes one");
+  }
+  if (out.path->keysChecksum != keysChecksum(log.request.keys))
+    return fail(o.compare + ": a path run with another key script than " + o.input +
+                "'s; give gizmo crosscheck the same --keys file as gizmo record");
+  out.label = fileName(o.compare);
+  return kExitOk;
+}
+
+int comparisonOf(const replay::OpenedLog& log, const RenderOptions& o, Comparison& out) {
+  if (o.compare.rfind(kBox2dPrefix, 0) == 0) return box2dComparison(log, o.compare.substr(kBox2dPrefix.size()), out);
+  std::error_code error;
+  if (std::filesystem::is_regular_file(o.compare, error) && !isLogFile(o.compare)) {
+    if (isPathFile(o.compare)) return pathComparison(log, o, out);
+    return fail(o.compare + ": neither a replay log nor a path file (--compare takes a log of the same board, a path "
+                "file from gizmo crosscheck --path-out, or box2d:STEP)");
+  }
+  int code = kExitOk;
+  out.log = openLogFor("render", o.compare, code);
+  if (!out.log) return code;
+  if (out.log->header.board != log.header.board)
+    return fail(o.compare + ": not a run of the same board as " + o.input + " (--compare lays runs of one board over each other)");
+  out.label = fileName(o.compare);
+  return kExitOk;
+}
+
+// One line for the person who asked: where our run and the path part, if they do.
+void sayParting(const RenderOptions& o, const PathOverlay& overlay) {
+  if (overlay.parting)
+    std::printf("%s: %s parts from %s at t = %.6g s (%s %.3g L apart, more than %g L)\n", fileName(o.output).c_str(),
+                fileName(o.input).c_str(), overlay.label.c_str(), overlay.parting->time, overlay.parting->ball.c_str(),
+                overlay.parting->distance, kPartingDistance);
+  else
+    std::printf("%s: %s and %s stay within %g L of each other\n", fileName(o.output).c_str(), fileName(o.input).c_str(),
+                overlay.label.c_str(), kPartingDistance);
+}
+
 int renderPlayer(const RenderOptions& o, double tolerance) {
   if (!o.trace.empty()) return fail("--trace draws paths on a picture (-o FILE.svg); the player shows them itself");
   if (o.input.empty() || !isLogFile(o.input))
@@ -55,26 +131,31 @@ int renderPlayer(const RenderOptions& o, double tolerance) {
   int code = kExitOk;
   const std::optional<replay::OpenedLog> log = openLogFor("render", o.input, code);
   if (!log) return code;
-  std::optional<replay::OpenedLog> other;
+  Comparison other;
   if (!o.compare.empty()) {
-    other = openLogFor("render", o.compare, code);
-    if (!other) return code;
-    if (other->header.board != log->header.board)
-      return fail(o.compare + ": not a run of the same board as " + o.input + " (--compare lays runs of one board over each other)");
+    try {
+      code = comparisonOf(*log, o, other);
+    } catch (const std::exception& e) {
+      return fail(o.compare + ": " + e.what());
+    }
+    if (code != kExitOk) return code;
   }
   std::vector<PlayerRun> runs;
   std::optional<Parting> parting;
+  std::optional<PathOverlay> overlay;
   try {
     runs.push_back(PlayerRun{fileName(o.input), trackRun(*log, tolerance)});
-    if (other) {
-      runs.push_back(PlayerRun{fileName(o.compare), trackRun(*other, tolerance)});
-      parting = partingOf(*log, *other);
+    if (other.log) {
+      runs.push_back(PlayerRun{other.label, trackRun(*other.log, tolerance)});
+      parting = partingOf(*log, *other.log);
     }
+    if (other.path) overlay = overlayOf(*other.path, other.label, runs.front().track, tolerance);
   } catch (const std::exception& e) {
     return fail(e.what());
   }
-  writeFileWhole(o.output, playerHtml(drawingOf(log->request.board), runs, parting));
-  if (other) return finishWithCutOffLogs("render", kExitOk, {&*log, &*other}, {o.input, o.compare});
+  writeFileWhole(o.output, playerHtml(drawingOf(log->request.board), runs, parting, overlay ? &*overlay : nullptr));
+  if (overlay) sayParting(o, *overlay);
+  if (other.log) return finishWithCutOffLogs("render", kExitOk, {&*log, &*other.log}, {o.input, o.compare});
   return finishWithCutOffLogs("render", kExitOk, {&*log}, {o.input});
 }
 

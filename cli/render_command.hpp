@@ -9,7 +9,7 @@ namespace gizmo::cli {
 struct RenderOptions {
   std::string input;    // a log (player or picture) or a board file (picture); empty: the built-in board
   std::string output;   // ends in .html (player) or .svg (picture)
-  std::string compare;  // player: a second log of the same board, laid over the first
+  std::string compare;  // player: a second log of the same board, a path file, or box2d:STEP, laid over the first
   std::string trace;    // picture: a log whose ball paths are drawn
   std::optional<double> tolerance;  // L: ball pieces closer than this to the one before are left out
 };

@@ -148,6 +148,33 @@ Json runJson(const PlayerRun& run) {
           {"notes", notesJson(t)}};
 }
 
+// Another engine's path: per ball the kept sample times and positions (x, y interleaved), and
+// where it parts from our run.
+Json pathJson(const PathOverlay& path) {
+  Json balls = Json::array();
+  for (const OverlayBall& b : path.balls) {
+    std::vector<double> p;
+    for (const Vec2<double>& at : b.p) p.insert(p.end(), {at.x, at.y});
+    balls.push_back({{"name", b.name}, {"count", b.t.size()}, {"t", base64Of(b.t)}, {"p", base64Of(p)}});
+  }
+  Json parting = nullptr;
+  if (path.parting) {
+    const PathParting& p = *path.parting;
+    parting = {{"time", p.time},
+               {"ball", p.ball},
+               {"distance", p.distance},
+               {"ours", {p.ours.x, p.ours.y}},
+               {"theirs", {p.theirs.x, p.theirs.y}}};
+  }
+  return {{"label", path.label},
+          {"engine", path.engine},
+          {"dt", path.dt},
+          {"tolerance", path.tolerance},
+          {"threshold", kPartingDistance},
+          {"balls", balls},
+          {"parting", parting}};
+}
+
 Json namesJson() {
   Json kinds = Json::array(), rules = Json::array(), decisions = Json::array();
   for (int k = 0; k < kEventKindCount; ++k) kinds.push_back(std::string(eventKindName(static_cast<EventKind>(k))));
@@ -177,7 +204,8 @@ std::string escapeHtml(const std::string& s) {
 
 }  // namespace
 
-std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& runs, const std::optional<Parting>& parting) {
+std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& runs, const std::optional<Parting>& parting,
+                       const PathOverlay* path) {
   Json data{{"format", 1}, {"names", namesJson()}, {"board", drawingJson(board)}, {"runs", Json::array()}};
   for (const PlayerRun& run : runs) data["runs"].push_back(runJson(run));
   if (parting) {
@@ -187,6 +215,7 @@ std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& 
                        {"first_events", parting->firstEvents ? Json(*parting->firstEvents) : Json()},
                        {"second_events", parting->secondEvents ? Json(*parting->secondEvents) : Json()}};
   }
+  if (path) data["path"] = pathJson(*path);
   // Inside a script element "</script" or "<!--" would end or confuse it; '<' only occurs
   // within JSON strings, where \u003c means the same.
   std::string json;
@@ -197,6 +226,7 @@ std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& 
   std::string page = kPlayerHtml;
   std::string title = runs.empty() ? "gizmo run" : runs.front().label;
   if (runs.size() > 1) title += " vs " + runs[1].label;
+  if (path) title += " vs " + path->label;
   replaceOnce(page, "{{title}}", escapeHtml(title));
   replaceOnce(page, "{{style}}", kPlayerCss);
   replaceOnce(page, "{{data}}", json);

@@ -1,11 +1,13 @@
 #pragma once
 // The replay player: one self-contained HTML page (its style, script and the run's data inside
-// it; nothing fetched) that plays one run, or two runs of one board laid over each other.
+// it; nothing fetched) that plays one run, or two runs of one board laid over each other, or one
+// run with another engine's path over it.
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "render_board_drawing.hpp"
+#include "render_path_overlay.hpp"
 #include "render_run_track.hpp"
 
 namespace gizmo::cli {
@@ -23,6 +25,7 @@ struct Parting {
   std::optional<std::uint64_t> firstEvents, secondEvents;  // events each run had executed by then
 };
 
-std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& runs, const std::optional<Parting>& parting);
+std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& runs, const std::optional<Parting>& parting,
+                       const PathOverlay* path = nullptr);
 
 }  // namespace gizmo::cli

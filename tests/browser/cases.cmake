@@ -17,3 +17,8 @@ gizmo_browser_test(two_balls_every_piece
 # The classic model (straight steps at every event, rebuilt by stepping as the board does).
 gizmo_browser_test(classic_model
   BOARD=${GIZMO_BROWSER_FIXTURES}/boards/spec-example.txt TIME=6 PICK=5 TOLERANCE=0 MODEL=classic)
+# Our run against Box2D's path at 1/240 s (gizmo crosscheck --path-out, gizmo render --compare):
+# every path sample kept, Box2D's ball drawn where the path file has it, and the parting marked.
+gizmo_browser_test(box2d_overlay
+  BOARD=${GIZMO_BROWSER_FIXTURES}/boards/spec-example.txt KEYS=${GIZMO_BROWSER_FIXTURES}/keys/flippers.keys
+  TIME=6 PICK=5 TOLERANCE=0 COMPARE_DT=1/240 COMPARE_SAMPLE=300)

@@ -5,7 +5,12 @@
 #   `gizmo replay LOG --event N --json`: bit for bit (both as C's %a hex floats), or with WITHIN
 #   (L, for a page rendered at a non-zero tolerance) to within that distance per axis; then
 #   saves a screenshot of that moment.
-# Variables: GIZMO, BOARD, TIME, PICK, WORK_DIR; optional KEYS, TOLERANCE, MODEL, WITHIN.
+#   With COMPARE_DT (a Box2D step size), the page is rendered with --compare and Box2D's path from
+#   `gizmo crosscheck --path-out` (same board, keys and time), and is also opened at the time of the
+#   path file's COMPARE_SAMPLE-th sample line: every Box2D ball must be drawn at that sample's
+#   position (within WITHIN when given, else to 10^-9 L), and the page must mark where the runs part.
+# Variables: GIZMO, BOARD, TIME, PICK, WORK_DIR; optional KEYS, TOLERANCE, MODEL, WITHIN, COMPARE_DT,
+# COMPARE_SAMPLE.
 cmake_minimum_required(VERSION 3.25)
 foreach(required GIZMO BOARD TIME PICK WORK_DIR)
   if(NOT DEFINED ${required})
@@ -44,13 +49,18 @@ function(gizmo_step)
   set(out "${out}" PARENT_SCOPE)
 endfunction()
 
+# The run's key script and model, for each command that runs the board (record, crosscheck).
+macro(add_run_options list)
+  if(DEFINED KEYS)
+    list(APPEND ${list} --keys ${KEYS})
+  endif()
+  if(DEFINED MODEL)
+    list(APPEND ${list} --model ${MODEL})
+  endif()
+endmacro()
+
 set(record_args record ${BOARD} --time ${TIME} -o ${log})
-if(DEFINED KEYS)
-  list(APPEND record_args --keys ${KEYS})
-endif()
-if(DEFINED MODEL)
-  list(APPEND record_args --model ${MODEL})
-endif()
+add_run_options(record_args)
 gizmo_step(${record_args})
 
 # The PICK-th collision; the page is asked for the board after it (event index + 1 events).
@@ -77,6 +87,13 @@ set(expected "${out}")
 set(render_args render ${log} -o ${page})
 if(DEFINED TOLERANCE)
   list(APPEND render_args --tolerance ${TOLERANCE})
+endif()
+if(DEFINED COMPARE_DT)
+  set(path_file ${WORK_DIR}/box2d.path)
+  set(crosscheck_args crosscheck ${BOARD} --time ${TIME} --dt ${COMPARE_DT} --path-out ${path_file})
+  add_run_options(crosscheck_args)
+  gizmo_step(${crosscheck_args})
+  list(APPEND render_args --compare ${path_file})
 endif()
 gizmo_step(${render_args})
 
@@ -139,6 +156,61 @@ foreach(i RANGE ${last})
     message(STATUS "ball ${name} after ${events} events: drawn exactly where the log has it")
   endif()
 endforeach()
+
+if(DEFINED COMPARE_DT)
+  # The sample's line: "TIME BALL X Y" (the samples start on the path file's 10th line).
+  file(STRINGS ${path_file} path_lines)
+  math(EXPR at "8 + ${COMPARE_SAMPLE}")
+  list(GET path_lines ${at} sample)
+  string(REPLACE " " ";" sample "${sample}")
+  list(GET sample 0 sample_time)
+  list(GET sample 1 sample_ball)
+  list(GET sample 2 sample_x)
+  list(GET sample 3 sample_y)
+  execute_process(COMMAND ${CHROMIUM} --headless --no-sandbox --disable-gpu --hide-scrollbars
+                          --user-data-dir=${WORK_DIR}/profile --virtual-time-budget=5000
+                          --dump-dom "file://${page}#time=${sample_time}"
+                  RESULT_VARIABLE code OUTPUT_VARIABLE dom ERROR_VARIABLE chromium_err TIMEOUT 120)
+  if(NOT code EQUAL 0 OR NOT dom MATCHES "<output id=\"probe\"[^>]*>([^<]+)</output>")
+    message(FATAL_ERROR "the page at #time=${sample_time} wrote no probe (${code}): ${chromium_err}")
+  endif()
+  set(probe "${CMAKE_MATCH_1}")
+  file(WRITE ${WORK_DIR}/probe-box2d.json "${probe}")
+  string(JSON parting ERROR_VARIABLE no_parting GET "${probe}" parting)
+  if(no_parting OR parting STREQUAL "null" OR parting STREQUAL "")
+    message(FATAL_ERROR "the page marks no parting of our run and Box2D's: ${probe}")
+  endif()
+  string(JSON drawn LENGTH "${probe}" path)
+  set(found OFF)
+  if(drawn GREATER 0)
+    math(EXPR last "${drawn} - 1")
+    foreach(i RANGE ${last})
+      string(JSON name GET "${probe}" path ${i} name)
+      if(NOT name STREQUAL sample_ball)
+        continue()
+      endif()
+      set(found ON)
+      if(DEFINED WITHIN)
+        to_nano(${WITHIN} within_nano)
+      else()
+        set(within_nano 1)
+      endif()
+      foreach(axis x y)
+        string(JSON got GET "${probe}" path ${i} ${axis}_value)
+        to_nano(${got} got_nano)
+        to_nano(${sample_${axis}} want_nano)
+        math(EXPR off "${got_nano} - ${want_nano}")
+        if(off GREATER within_nano OR off LESS -${within_nano})
+          message(FATAL_ERROR "Box2D's ${name} drawn at ${axis} = ${got} at t = ${sample_time}, the path file says ${sample_${axis}}")
+        endif()
+      endforeach()
+      message(STATUS "Box2D's ${name} at t = ${sample_time}: drawn where the path file has it; the runs part at ${parting} s")
+    endforeach()
+  endif()
+  if(NOT found)
+    message(FATAL_ERROR "the page drew no Box2D ball ${sample_ball}: ${probe}")
+  endif()
+endif()
 
 set(shot ${WORK_DIR}/player.png)
 execute_process(COMMAND ${CHROMIUM} ${chromium_args} --window-size=1280,900 --screenshot=${shot} ${url}

@@ -3,6 +3,7 @@
 #   cmake -DGIZMO=exe -DOUT=folder -P study_quick.cmake
 cmake_minimum_required(VERSION 3.25)
 include(${CMAKE_CURRENT_LIST_DIR}/gizmo_cli.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/study_charts.cmake)
 
 file(REMOVE_RECURSE ${OUT})
 gizmo_run(RUN study --quick --out ${OUT})
@@ -33,18 +34,7 @@ foreach(i RANGE ${lastScene})
   string(JSON count LENGTH "${json}" scenes ${i} results)
   math(EXPR results "${results} + ${count}")
   # Each scene has its chart, an SVG drawn by gnuplot, and the page shows it.
-  set(svg ${OUT}/charts/pareto-${name}.svg)
-  if(NOT EXISTS ${svg})
-    gizmo_fail("charts/pareto-${name}.svg was not written")
-  endif()
-  file(READ ${svg} text LIMIT 2000)
-  if(NOT text MATCHES "<svg")
-    gizmo_fail("charts/pareto-${name}.svg is not an SVG")
-  endif()
-  string(FIND "${html}" "charts/pareto-${name}.svg" at)
-  if(at LESS 0)
-    gizmo_fail("index.html does not show charts/pareto-${name}.svg")
-  endif()
+  study_check_chart(${OUT} pareto-${name} "${html}")
   # The reference is a method of its own with no error; it is the ballistic mpfr:256 run.
   math(EXPR last "${count} - 1")
   set(references 0)
@@ -87,6 +77,13 @@ foreach(part "Reading" "Pareto front" "Our ballistic double run against Box2D" "
     gizmo_fail("index.html lacks '${part}'")
   endif()
 endforeach()
+
+# Without --bench there is no Kernels part: no kernel files, no charts, nothing on the page.
+file(GLOB kernelFiles ${OUT}/kernels.* ${OUT}/charts/kernels*)
+string(FIND "${html}" "Kernels" at)
+if(kernelFiles OR at GREATER_EQUAL 0)
+  gizmo_fail("a study without --bench should have no Kernels part: ${kernelFiles}")
+endif()
 
 # Bad input: a manifest with a bad line, from a folder; exit 2, a message, no output folder.
 set(bad ${OUT}-bad-scenes)

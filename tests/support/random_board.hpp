@@ -8,6 +8,7 @@
 
 #include "gizmo/core/board_spec.hpp"
 #include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/core/cell_occupancy.hpp"
 
 namespace gizmo::test {
 
@@ -19,7 +20,7 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
   s.gravity = whole(0, 3) == 0 ? 0 : real(0, 60);
   s.mu = whole(0, 2) == 0 ? 0 : real(0, 0.1);
   s.mu2 = s.mu == 0 ? 0 : real(0, 0.1);
-  bool taken[kBoardSize][kBoardSize] = {};
+  CellOccupancy cells;
   const int gizmos = whole(0, 40);
   for (int i = 0; i < gizmos; ++i) {
     GizmoSpec g;
@@ -34,12 +35,7 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
     g.x = whole(0, kBoardSize - g.width);
     g.y = whole(0, kBoardSize - g.height);
     g.orientation = g.type == GizmoType::Absorber ? 0 : 90 * whole(0, 3);
-    bool free = true;
-    for (int y = g.y; y < g.y + g.height; ++y)
-      for (int x = g.x; x < g.x + g.width; ++x) free = free && !taken[y][x];
-    if (!free) continue;
-    for (int y = g.y; y < g.y + g.height; ++y)
-      for (int x = g.x; x < g.x + g.width; ++x) taken[y][x] = true;
+    if (!cells.place(g)) continue;
     s.gizmos.push_back(g);
     if (whole(0, 2) == 0) s.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, g.name, {}});
     if (whole(0, 3) == 0)

@@ -1,16 +1,21 @@
 // Certified decisions (docs/verification.md): fixture runs are certified in full or every
 // uncertified decision has its reason; boards built so that double provably decides wrong are
 // flagged at exactly that decision, and an mpfr:256 run of the same board decides the other way;
-// a genuine tie is recognised and its documented order checked.
+// genuine ties are proven exact (a common root of the gap polynomials, or a scheduled time that is
+// a root) and their documented order checked; the exact step's algebra and its ordering of two
+// roots the intervals cannot part. Swinging flippers: verify_certify_flipper_test.cpp.
 #include <gtest/gtest.h>
 
 #include <sstream>
 #include <string>
 
+#include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/io/board_file.hpp"
 #include "support/fixture_request.hpp"
 #include "gizmo/verify/certify.hpp"
+#include "gizmo/verify/certify_exact.hpp"
+#include "gizmo/verify/certify_qpoly.hpp"
 
 namespace gizmo::verify {
 namespace {
@@ -63,29 +68,32 @@ INSTANTIATE_TEST_SUITE_P(
                       FixtureCase{"boards/gizmos/circle.txt", MotionModel::Classic, 10},
                       FixtureCase{"boards/gizmos/triangle-180.txt", MotionModel::Ballistic, 10}));
 
-// The spec example swings its flippers whenever a circle is hit: the decisions a swinging
-// flipper could affect are reported as such, never as certified; all others are certified.
-TEST(CertifyRun, SpecExampleIsCertifiedExceptNearSwingingFlippers) {
+// The spec example swings its flippers whenever a circle is hit; the decisions next to a
+// swinging flipper are certified like the others.
+TEST(CertifyRun, SpecExampleIsCertifiedIncludingNearSwingingFlippers) {
   for (MotionModel model : {MotionModel::Classic, MotionModel::Ballistic}) {
     const CertifyReport r = certifyRun(requestFor("boards/spec-example.txt", model, 20));
     expectAccounted(r);
     EXPECT_TRUE(r.wrong.empty()) << describe(r);
     EXPECT_EQ(r.uncertifiedByReason[std::size_t(UncertifiedReason::Undecided)], 0u) << describe(r);
-    EXPECT_EQ(r.certified() + r.uncertifiedByReason[std::size_t(UncertifiedReason::SwingingFlipper)], r.decisions);
-    EXPECT_GT(r.certified(), r.decisions * 9 / 10);
+    EXPECT_EQ(r.uncertifiedByReason[std::size_t(UncertifiedReason::SwingingFlipper)], 0u) << describe(r);
+    EXPECT_TRUE(r.allCertified()) << describe(r);
   }
 }
 
-// Four balls meeting in the centre: the symmetric meetings are genuine ties, run in the
-// documented order.
-TEST(CertifyRun, SymmetricMeetingsAreTiesInTheDocumentedOrder) {
-  const CertifyReport r = certifyRun(requestFor("boards/scenes/four-balls-meeting.txt", MotionModel::Ballistic, 10));
-  expectAccounted(r);
-  EXPECT_TRUE(r.wrong.empty()) << describe(r);
-  ASSERT_FALSE(r.ties.empty());
-  for (const TieDecision& t : r.ties) {
-    EXPECT_TRUE(t.orderFollowed) << describe(r);
-    EXPECT_LT(t.within.value, 1e-100);  // settled only at the top of the ladder
+// Four balls meeting in the centre: the symmetric meetings are genuine ties, proven exact and
+// run in the documented order.
+TEST(CertifyRun, SymmetricMeetingsAreProvenTiesInTheDocumentedOrder) {
+  for (MotionModel model : {MotionModel::Classic, MotionModel::Ballistic}) {
+    const CertifyReport r = certifyRun(requestFor("boards/scenes/four-balls-meeting.txt", model, 10));
+    expectAccounted(r);
+    EXPECT_TRUE(r.wrong.empty()) << describe(r);
+    ASSERT_FALSE(r.ties.empty());
+    EXPECT_EQ(r.provenTies(), r.ties.size()) << describe(r);
+    for (const TieDecision& t : r.ties) {
+      EXPECT_TRUE(t.orderFollowed) << describe(r);
+      EXPECT_EQ(t.within.value, 0.0);
+    }
   }
 }
 
@@ -168,17 +176,143 @@ TEST(CertifyWrong, BallSlippingPastACornerIsFlaggedAndMpfrStopsIt) {
   EXPECT_NEAR(w.time.value - toDouble(m->time), w.byAtLeast.value, 1e-12);
 }
 
-TEST(CertifyTie, DiagonalIntoTheCornerIsAGenuineTieInTheDocumentedOrder) {
-  const CertifyReport r = certifyRun(requestFor("boards/verify/genuine-tie-corner.txt", MotionModel::Ballistic, 2.5));
-  expectAccounted(r);
-  EXPECT_TRUE(r.wrong.empty()) << describe(r);
-  ASSERT_EQ(r.ties.size(), 1u) << describe(r);
-  const TieDecision& t = r.ties[0];
-  EXPECT_EQ(t.executed.feature, 1);  // the floor ran first …
-  EXPECT_EQ(t.other.feature, 2);     // … tied with the right wall
-  EXPECT_TRUE(t.orderFollowed);
-  EXPECT_NEAR(t.time.value, 1.95, 1e-12);  // (19.75 − 10) / 5
+TEST(CertifyTie, DiagonalIntoTheCornerIsAProvenTieInTheDocumentedOrder) {
+  for (MotionModel model : {MotionModel::Classic, MotionModel::Ballistic}) {
+    const CertifyReport r = certifyRun(requestFor("boards/verify/genuine-tie-corner.txt", model, 2.5));
+    expectAccounted(r);
+    EXPECT_TRUE(r.wrong.empty()) << describe(r);
+    ASSERT_EQ(r.ties.size(), 1u) << describe(r);
+    const TieDecision& t = r.ties[0];
+    EXPECT_TRUE(t.proven) << describe(r);  // not merely within 2^-512
+    EXPECT_EQ(t.within.value, 0.0);
+    EXPECT_TRUE(t.alsoTied.empty());
+    EXPECT_EQ(t.executed.feature, 1);  // the floor ran first …
+    EXPECT_EQ(t.other.feature, 2);     // … tied with the right wall
+    EXPECT_TRUE(t.orderFollowed);
+    EXPECT_NEAR(t.time.value, 1.95, 1e-12);  // (19.75 − 10) / 5
+  }
 }
+
+// A collision at exactly a tick boundary: proven tied with the scheduled events there (the
+// recalculation runs before the end of tick), and run before them, as collisions come first.
+TEST(CertifyTie, AWallHitAtATickBoundaryIsAProvenTieWithTheScheduledEvents) {
+  for (MotionModel model : {MotionModel::Classic, MotionModel::Ballistic}) {
+    RunRequest request = requestFor("boards/verify/tie-at-tick.txt", model, 1.5);
+    request.maxTick = 0.0625;
+    const CertifyReport r = certifyRun(request);
+    expectAccounted(r);
+    EXPECT_TRUE(r.wrong.empty()) << describe(r);
+    ASSERT_EQ(r.ties.size(), 1u) << describe(r);
+    const TieDecision& t = r.ties[0];
+    EXPECT_TRUE(t.proven);
+    EXPECT_EQ(t.time.value, 1.0);
+    EXPECT_EQ(t.executed.kind, EventKind::Collision);
+    EXPECT_EQ(t.executed.feature, 2);  // the right wall
+    EXPECT_EQ(t.other.kind, EventKind::Recalculate);
+    EXPECT_TRUE(t.orderFollowed);
+  }
+}
+
+// The report tells proven ties from ties within the top rung's resolution, as text and JSON.
+TEST(CertifyTie, TheReportTellsProvenTiesFromTiesWithinAResolution) {
+  const CertifyReport r = certifyRun(requestFor("boards/verify/genuine-tie-corner.txt", MotionModel::Ballistic, 2.5));
+  EXPECT_EQ(r.provenTies(), 1u);
+  const std::string text = describe(r);
+  EXPECT_NE(text.find("ties: 1 (proven exact: 1, within 2^-512 only: 0;"), std::string::npos) << text;
+  EXPECT_NE(text.find("proven exactly equal"), std::string::npos) << text;
+  const std::string json = certifyReportJson(r);
+  EXPECT_NE(json.find("\"ties_proven\": 1"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"proven\": true"), std::string::npos) << json;
+}
+
+namespace exact {
+
+using detail::QPoly;
+
+QPoly poly(std::initializer_list<long> c) {
+  QPoly p;
+  for (long x : c) p.push_back(Rational(x));
+  detail::trim(p);
+  return p;
+}
+
+TEST(CertifyExact, TheGcdOfTwoPolynomialsIsTheirCommonFactor) {
+  // (s − 1)(s − 2) and (s − 1)(s + 3)(2s − 5): the monic gcd is s − 1.
+  const QPoly a = poly({2, -3, 1});
+  const QPoly b = detail::product(poly({-3, 2, 1}), poly({-5, 2}));
+  EXPECT_EQ(detail::gcdOf(a, b), poly({-1, 1}));
+  EXPECT_EQ(detail::gcdOf(a, poly({-3, 1})), poly({1}));  // coprime: a constant
+}
+
+TEST(CertifyExact, SturmCountsDistinctRootsInAHalfOpenInterval) {
+  // (s − 1)²(s − 2)(s + 1): distinct roots −1, 1, 2; the double root counts once.
+  const QPoly p = detail::product(detail::product(poly({-1, 1}), poly({-1, 1})), detail::product(poly({-2, 1}), poly({1, 1})));
+  const detail::SturmChain chain(p);
+  EXPECT_EQ(chain.rootsIn(Rational(-3), Rational(3)), 3);
+  EXPECT_EQ(chain.rootsIn(Rational(0), Rational(3)), 2);
+  EXPECT_EQ(chain.rootsIn(Rational(3, 2), Rational(5, 2)), 1);
+  EXPECT_EQ(chain.rootsIn(Rational(-1, 2), Rational(1, 2)), 0);
+  // s² − 2: √2 lies in (1.41421356, 1.41421357], not in (1.41421357, 2].
+  const detail::SturmChain root2(poly({-2, 0, 1}));
+  EXPECT_EQ(root2.rootsIn(Rational(141421356, 100000000), Rational(141421357, 100000000)), 1);
+  EXPECT_EQ(root2.rootsIn(Rational(141421357, 100000000), Rational(2)), 0);
+}
+
+// The near tie of near-tie-corner.txt handed to the exact step as if no rung had parted the two
+// walls: it orders them exactly (the floor first, by under 1e-15 s) when asked to, and does not
+// call them a tie.
+TEST(CertifyExact, RootsTheIntervalsCannotPartAreOrderedExactly) {
+  detail::BoardLayout layout;
+  detail::LayoutGizmo walls;
+  walls.id = 0;
+  walls.shape = outerWallsShape<double>();
+  detail::LayoutGizmo ball;
+  ball.id = 1;
+  ball.kind = detail::LayoutKind::Ball;
+  layout.gizmos = {walls, ball};
+  layout.balls = {1};
+  layout.ballIndex = {-1, 0};
+  detail::BoardSnapshot snap;
+  detail::BallSnapshot b;
+  b.id = 1;
+  b.p = Vec2<double>(10.0, 10.000000000000023);
+  b.v = Vec2<double>(5.0, 4.999999999999989);
+  snap.balls = {b};
+  detail::DecisionInput in;
+  in.executed.kind = EventKind::Collision;
+  in.executed.a = 0;
+  in.executed.b = 1;
+  in.executed.feature = 2;  // the right wall
+  in.executed.time = 1.95;
+  in.hasNextScheduled = true;
+  in.nextScheduled.time = 2.0;
+  detail::RungOutcome undecided;
+  undecided.ownLo = 1.9;
+  undecided.ownHi = 1.96;
+  undecided.overlaps.push_back(detail::Overlap{detail::EventKey{EventKind::Collision, 0, 1, 1}, false, true, true, 1.9, 1.96});
+  EXPECT_FALSE(detail::settleExactly(layout, snap, in, undecided, false));  // distinct: no tie
+  const std::optional<detail::RungOutcome> exact = detail::settleExactly(layout, snap, in, undecided, true);
+  ASSERT_TRUE(exact);
+  EXPECT_EQ(exact->verdict, detail::Verdict::Wrong);
+  EXPECT_EQ(exact->other.feature, 1);  // the floor
+  // The floor's time exactly, (19.75 − y) / vy, is before the right wall's, (19.75 − x) / vx, by
+  // an amount the proven bounds hold.
+  const Rational floor = (Rational(19.75) - Rational(b.p.y)) / Rational(b.v.y);
+  const Rational wall = (Rational(19.75) - Rational(b.p.x)) / Rational(b.v.x);
+  const Rational by = wall - floor;
+  EXPECT_GT(exact->byLo, 0.0);
+  EXPECT_LE(Rational(exact->byLo), by);
+  EXPECT_LE(by, Rational(exact->byHi));
+  EXPECT_LT(exact->byHi, 1e-14);
+  // The same walls claimed in the other order are certified exactly.
+  in.executed.feature = 1;
+  undecided.overlaps[0].key.feature = 2;
+  const std::optional<detail::RungOutcome> right = detail::settleExactly(layout, snap, in, undecided, true);
+  ASSERT_TRUE(right);
+  EXPECT_EQ(right->verdict, detail::Verdict::Certified);
+}
+
+}  // namespace exact
 
 TEST(CertifyLog, RefusesALogThatIsNotOfADoubleRun) {
   replay::OpenedLog log = replay::openLog(std::string(GIZMO_FIXTURES_DIR) + "/logs/four-balls-meeting-3s-ballistic-long-double.gzlog");

@@ -1,6 +1,8 @@
 // The interval types enclose the exact results of their operations: checked against MPFR at
 // high precision over seeded random operands, and for point operands they give exactly the
-// directed roundings of the exact result (the tightest double bounds).
+// directed roundings of the exact result (the tightest double bounds). π, sine and cosine (for
+// the swinging flippers) enclose MPFR's correctly rounded values, near the multiples of π/2 too,
+// and over intervals take the extremes ±1 wherever the interval holds one.
 // Built with -frounding-math (interval.hpp needs it).
 #include <gtest/gtest.h>
 #include <mpfr.h>
@@ -10,8 +12,10 @@
 #include <cmath>
 #include <functional>
 #include <random>
+#include <vector>
 
 #include "gizmo/verify/interval.hpp"
+#include "gizmo/verify/interval_trig.hpp"
 #include "gizmo/verify/mpfi_interval.hpp"
 
 namespace gizmo::verify {
@@ -178,6 +182,156 @@ TEST(VerifyInterval, TheSquareOfAnIntervalThroughZeroStartsAtZero) {
   EXPECT_EQ(s.upper(), 9.0);
   const Interval p = Interval(-2.0, 3.0) * Interval(-2.0, 3.0);  // the two factors taken apart
   EXPECT_EQ(p.lower(), -6.0);
+}
+
+// sin x or cos x rounded to a double in the direction rnd (MPFR rounds correctly: these are the
+// tightest double bounds of the exact value).
+double trigRounded(bool sine, double x, mpfr_rnd_t rnd) {
+  mpfr_t a, r;
+  mpfr_init2(a, 53);
+  mpfr_init2(r, 53);
+  mpfr_set_d(a, x, MPFR_RNDN);
+  if (sine) mpfr_sin(r, a, rnd);
+  else mpfr_cos(r, a, rnd);
+  const double d = mpfr_get_d(r, rnd);
+  mpfr_clear(a);
+  mpfr_clear(r);
+  return d;
+}
+
+// The double nearest to k·π/2 (from a 256-bit π).
+double nearestQuarterTurn(int k) {
+  mpfr_t v;
+  mpfr_init2(v, 256);
+  mpfr_const_pi(v, MPFR_RNDN);
+  mpfr_mul_si(v, v, k, MPFR_RNDN);
+  mpfr_div_2ui(v, v, 1, MPFR_RNDN);
+  const double d = mpfr_get_d(v, MPFR_RNDN);
+  mpfr_clear(v);
+  return d;
+}
+
+// Arguments of every scale, and the doubles nearest the multiples of π/2 with their neighbours,
+// where the reduction cancels most and the extremes sit.
+std::vector<double> trigArguments() {
+  std::mt19937_64 rng(kSeed + 2);
+  std::uniform_real_distribution<double> mantissa(-1.0, 1.0);
+  std::uniform_int_distribution<int> exponent(-30, 12);
+  std::vector<double> xs{0.0, -0.0, 0x1p-1074, -0x1p-600, 1.0, -1.0};
+  for (int i = 0; i < 4000; ++i) xs.push_back(std::ldexp(mantissa(rng), exponent(rng)));
+  for (int k = -64; k <= 64; ++k) {
+    double x = nearestQuarterTurn(k);
+    for (int step = 0; step < 3; ++step) x = std::nextafter(x, -1e300);
+    for (int step = 0; step < 7; ++step, x = std::nextafter(x, 1e300)) xs.push_back(x);
+  }
+  return xs;
+}
+
+template <class I>
+void checkTrigOfPoints(const char* name, std::function<double(const I&)> lower, std::function<double(const I&)> upper) {
+  for (double x : trigArguments()) {
+    I s, c;
+    {
+      UpwardRounding upward;
+      s = sin(I(x));
+      c = cos(I(x));
+    }
+    ASSERT_LE(lower(s), trigRounded(true, x, MPFR_RNDD)) << name << " sin " << std::hexfloat << x;
+    ASSERT_GE(upper(s), trigRounded(true, x, MPFR_RNDU)) << name << " sin " << std::hexfloat << x;
+    ASSERT_LE(lower(c), trigRounded(false, x, MPFR_RNDD)) << name << " cos " << std::hexfloat << x;
+    ASSERT_GE(upper(c), trigRounded(false, x, MPFR_RNDU)) << name << " cos " << std::hexfloat << x;
+    // Tight, not merely [−1, 1]: a few ulps, plus what reducing by an enclosed π/2 costs.
+    const double allowed = 1e-15 * (1.0 + std::fabs(x));
+    ASSERT_LE(upper(s) - lower(s), allowed) << name << " sin " << std::hexfloat << x;
+    ASSERT_LE(upper(c) - lower(c), allowed) << name << " cos " << std::hexfloat << x;
+  }
+}
+
+TEST(VerifyIntervalTrig, DoubleSinAndCosOfPointsEncloseMpfr) {
+  checkTrigOfPoints<Interval>("Interval", [](const Interval& i) { return i.lower(); },
+                              [](const Interval& i) { return i.upper(); });
+}
+
+TEST(VerifyIntervalTrig, MpfiSinAndCosOfPointsEncloseMpfr) {
+  MpfiInterval::setWorkingBits(128);
+  checkTrigOfPoints<MpfiInterval>("MpfiInterval", [](const MpfiInterval& i) { return lowerDouble(i); },
+                                  [](const MpfiInterval& i) { return upperDouble(i); });
+}
+
+// Over [a, b]: the values at the ends, at members in between, and at the doubles nearest every
+// multiple of π/2 inside (where sin or cos is ±1 to within 1e-32) all lie in the result.
+template <class I>
+void checkTrigOfIntervals(const char* name, std::function<double(const I&)> lower, std::function<double(const I&)> upper) {
+  std::mt19937_64 rng(kSeed + 3);
+  std::uniform_real_distribution<double> start(-40.0, 40.0), unit(0.0, 1.0);
+  const double widths[] = {1e-12, 1e-3, 0.3, 1.6, 3.2, 7.0};
+  for (int trial = 0; trial < 3000; ++trial) {
+    const double a = start(rng), b = a + widths[trial % 6] * unit(rng);
+    I s, c;
+    {
+      UpwardRounding upward;
+      s = sin(I(a, b));
+      c = cos(I(a, b));
+    }
+    ASSERT_GE(lower(s), -1.0);
+    ASSERT_LE(upper(c), 1.0);
+    std::vector<double> members{a, b};
+    for (int i = 0; i < 6; ++i) members.push_back(std::clamp(a + (b - a) * unit(rng), a, b));
+    for (int k = -30; k <= 30; ++k) {
+      const double q = nearestQuarterTurn(k);
+      if (a <= q && q <= b) members.push_back(q);
+    }
+    for (double x : members) {
+      ASSERT_LE(lower(s), trigRounded(true, x, MPFR_RNDD)) << name << " sin over [" << a << ", " << b << "] at " << x;
+      ASSERT_GE(upper(s), trigRounded(true, x, MPFR_RNDU)) << name << " sin over [" << a << ", " << b << "] at " << x;
+      ASSERT_LE(lower(c), trigRounded(false, x, MPFR_RNDD)) << name << " cos over [" << a << ", " << b << "] at " << x;
+      ASSERT_GE(upper(c), trigRounded(false, x, MPFR_RNDU)) << name << " cos over [" << a << ", " << b << "] at " << x;
+    }
+  }
+}
+
+TEST(VerifyIntervalTrig, DoubleSinAndCosOfIntervalsEncloseEveryMember) {
+  checkTrigOfIntervals<Interval>("Interval", [](const Interval& i) { return i.lower(); },
+                                 [](const Interval& i) { return i.upper(); });
+}
+
+TEST(VerifyIntervalTrig, MpfiSinAndCosOfIntervalsEncloseEveryMember) {
+  MpfiInterval::setWorkingBits(128);
+  checkTrigOfIntervals<MpfiInterval>("MpfiInterval", [](const MpfiInterval& i) { return lowerDouble(i); },
+                                     [](const MpfiInterval& i) { return upperDouble(i); });
+}
+
+TEST(VerifyIntervalTrig, AnIntervalHoldingAnExtremeReachesItExactly) {
+  UpwardRounding upward;
+  EXPECT_EQ(sin(Interval(1.5, 1.6)).upper(), 1.0);    // π/2 inside
+  EXPECT_LT(sin(Interval(1.5, 1.6)).lower(), 0.9975);  // sin 1.5 = 0.99749…
+  EXPECT_EQ(cos(Interval(3.0, 3.3)).lower(), -1.0);   // π inside
+  EXPECT_EQ(cos(Interval(-0.1, 0.1)).upper(), 1.0);
+  const Interval turn = sin(Interval(0.0, 7.0));      // more than a turn: everything
+  EXPECT_EQ(turn.lower(), -1.0);
+  EXPECT_EQ(turn.upper(), 1.0);
+  const Interval away = sin(Interval(0.2, 1.4));       // monotone: no extreme added
+  EXPECT_LT(away.upper(), 0.9855);                     // sin 1.4 = 0.98545…
+}
+
+TEST(VerifyIntervalTrig, PiLiesStrictlyInsideItsEnclosures) {
+  mpfr_t pi;
+  mpfr_init2(pi, kExactBits);
+  mpfr_const_pi(pi, MPFR_RNDN);  // 2400 bits: far finer than the bounds compared with
+  const Interval d = Interval::pi();
+  EXPECT_GT(mpfr_cmp_d(pi, d.lower()), 0);
+  EXPECT_LT(mpfr_cmp_d(pi, d.upper()), 0);
+  EXPECT_EQ(std::nextafter(d.lower(), 4.0), d.upper());  // neighbouring doubles
+  MpfiInterval::setWorkingBits(256);
+  const MpfiInterval m = MpfiInterval::pi();
+  mpfr_t bound;
+  mpfr_init2(bound, kExactBits);
+  mpfi_get_left(bound, m.raw());
+  EXPECT_LT(mpfr_cmp(bound, pi), 0);
+  mpfi_get_right(bound, m.raw());
+  EXPECT_GT(mpfr_cmp(bound, pi), 0);
+  mpfr_clear(bound);
+  mpfr_clear(pi);
 }
 
 }  // namespace

@@ -188,7 +188,7 @@ CrosscheckReport crosscheck(const CrosscheckOptions& options) {
   for (double dt : options.steps) {
     Box2dOptions b = options.box2d;
     b.dt = dt;
-    const RunRecord theirs = runBox2d(longer, b);
+    RunRecord theirs = runBox2d(longer, b);
     StepComparison c;
     c.dt = dt;
     c.end = end;
@@ -201,6 +201,7 @@ CrosscheckReport crosscheck(const CrosscheckOptions& options) {
     c.wallSeconds = theirs.wallSeconds;
     compareCollisions(ours, theirs, c);
     compareTrajectories(ours, theirs, c);
+    if (options.keepBox2dSamples) c.box2dSamples = std::move(theirs.samples);
     report.steps.push_back(std::move(c));
   }
   return report;

@@ -36,6 +36,12 @@ std::uint64_t CertifyReport::certified() const {
   return n;
 }
 
+std::uint64_t CertifyReport::provenTies() const {
+  std::uint64_t n = 0;
+  for (const TieDecision& t : ties) n += t.proven ? 1 : 0;
+  return n;
+}
+
 namespace {
 
 BoardLayout layoutOf(GameBoard<double>& board) {
@@ -55,8 +61,14 @@ BoardLayout layoutOf(GameBoard<double>& board) {
       L.kind = LayoutKind::Ball;
       layout.ballIndex[id] = std::int32_t(layout.balls.size());
       layout.balls.push_back(GizmoId(id));
-    } else if (dynamic_cast<const Flipper<double>*>(&g)) {
+    } else if (const auto* flipper = dynamic_cast<const Flipper<double>*>(&g)) {
       L.kind = LayoutKind::Flipper;
+      const GizmoSpec s = g.spec();
+      const FlipperLayout f = flipperLayout(s.type, s.orientation);
+      L.pivot = flipper->axisAt(0.0).pivot;
+      L.restQuarter = f.restQuarter;
+      L.endQuarter = f.endQuarter;
+      L.forwardSign = f.forwardSign;
     } else if (const auto* shaped = dynamic_cast<const AbstractGizmoWithPolygonalGeometry<double>*>(&g)) {
       L.shape = shaped->shape();
       L.kind = LayoutKind::FixedShape;
@@ -95,6 +107,7 @@ class CertifyingObserver final : public BoardObserver<double> {
     report_.model = std::string(motionModelName(layout_.model));
     report_.rungBits.push_back(53);
     for (long b : options.mpfiBits) report_.rungBits.push_back(b);
+    report_.rungBits.push_back(0);  // the exact step
     report_.certifiedAtRung.assign(report_.rungBits.size(), 0);
   }
 
@@ -164,6 +177,7 @@ class CertifyingObserver final : public BoardObserver<double> {
         fs.id = g.id;
         fs.swinging = f.swinging();
         if (!fs.swinging) fs.still = f.stillShape();
+        else swingOf(f, g, fs);
       } else if (g.kind == LayoutKind::Absorber) {
         const auto& a = static_cast<const Absorber<double>&>(board_.gizmo(g.id));
         if (s.absorbers.size() <= absorbers) s.absorbers.emplace_back();
@@ -172,6 +186,21 @@ class CertifyingObserver final : public BoardObserver<double> {
         as.firedInside = a.firedStillInside();
       }
     }
+  }
+
+  // The swing's anchor, exactly as the flipper holds it (its saved state starts with t0, s0). A
+  // swing that starts back from the end position starts from that exact quarter turn: the core
+  // snapped the flipper to it when the forward swing stopped.
+  void swingOf(const Flipper<double>& f, const LayoutGizmo& g, FlipperSnapshot& out) {
+    flipperState_.reals.clear();
+    flipperState_.ints.clear();
+    f.saveState(flipperState_);
+    const double t0 = flipperState_.reals.at(0), s0 = flipperState_.reals.at(1);
+    const bool fromEnd = s0 == Flipper<double>::swingTime();
+    out.quarter = fromEnd ? g.endQuarter : g.restQuarter;
+    out.offset = fromEnd ? 0.0 : s0;
+    out.t0 = t0;
+    out.turn = g.forwardSign * f.direction();
   }
 
   void forget(const Event<double>& e) {
@@ -212,10 +241,15 @@ class CertifyingObserver final : public BoardObserver<double> {
 
   void record(const LadderResult& result, const DecisionInput& in) {
     const RungOutcome& o = result.outcome;
+    // Most decisions are certified and only counted: their names and printed times are not made.
+    if (o.verdict == Verdict::Certified) {
+      ++report_.certifiedAtRung[std::size_t(result.rung)];
+      return;
+    }
     const EventRef executed = refOf(keyOf(in.executed));
     const ExactBound time = exactBound(in.executed.time);
     switch (o.verdict) {
-      case Verdict::Certified: ++report_.certifiedAtRung[std::size_t(result.rung)]; return;
+      case Verdict::Certified: return;
       case Verdict::Wrong: {
         WrongDecision w;
         w.eventIndex = in.eventIndex;
@@ -230,13 +264,29 @@ class CertifyingObserver final : public BoardObserver<double> {
         report_.wrong.push_back(std::move(w));
         return;
       }
-      case Verdict::SwingingFlipper: uncertified(in, o, executed, time, UncertifiedReason::SwingingFlipper); return;
+      case Verdict::Tie: {
+        TieDecision t;
+        t.eventIndex = in.eventIndex;
+        t.time = time;
+        t.executed = executed;
+        t.proven = true;
+        t.within = exactBound(0.0);
+        for (const EventKey& k : o.tiedWith) {
+          if (t.other.description.empty()) t.other = refOf(k);
+          else t.alsoTied.push_back(refOf(k));
+          t.orderFollowed = t.orderFollowed && tieOrderBefore(keyOf(in.executed), k);
+        }
+        report_.ties.push_back(std::move(t));
+        return;
+      }
       case Verdict::Undecided: break;
     }
     // Still overlapping at the top rung: a tie if the window is down at that precision's scale.
     const double tieScale = std::ldexp(std::max(1.0, std::abs(in.executed.time)), -int(result.bits / 2));
     if (!(o.window <= tieScale)) {
-      uncertified(in, o, executed, time, UncertifiedReason::Undecided);
+      bool swinging = !o.ownPolynomial;
+      for (const Overlap& v : o.overlaps) swinging = swinging || !v.polynomial;
+      uncertified(in, o, executed, time, swinging ? UncertifiedReason::SwingingFlipper : UncertifiedReason::Undecided);
       return;
     }
     TieDecision t;
@@ -244,7 +294,7 @@ class CertifyingObserver final : public BoardObserver<double> {
     t.time = time;
     t.executed = executed;
     t.other = refOf(o.other);
-    t.within = exactBound(o.window);
+    t.within = exactBound(o.window + 0.0);  // a width of −0 (two equal points) reads as 0
     t.orderFollowed = sameEvent(o.other, keyOf(in.executed)) || tieOrderBefore(keyOf(in.executed), o.other);
     report_.ties.push_back(std::move(t));
   }
@@ -265,6 +315,7 @@ class CertifyingObserver final : public BoardObserver<double> {
   std::vector<Event<double>> live_;
   BoardSnapshot snapshot_;
   bool snapshotTaken_ = false;
+  GizmoState<double> flipperState_;  // scratch for swingOf
 };
 
 }  // namespace

@@ -28,7 +28,16 @@ nlohmann::ordered_json eventJson(const EventRef& e) {
                         {"feature", e.feature}, {"description", e.description}};
 }
 
-std::string rungName(long bits) { return bits == 53 ? "double intervals" : "mpfi:" + std::to_string(bits); }
+std::string rungName(long bits) {
+  if (bits == 0) return "exact rationals";
+  return bits == 53 ? "double intervals" : "mpfi:" + std::to_string(bits);
+}
+
+// "2^-512": the resolution below which the top rung calls two times a tie it could not prove.
+std::string tieResolution(const CertifyReport& r) {
+  const long top = r.rungBits.size() >= 2 ? r.rungBits[r.rungBits.size() - 2] : 53;
+  return "2^-" + std::to_string(top / 2);
+}
 
 }  // namespace
 
@@ -41,12 +50,17 @@ void printCertifyReport(std::ostream& out, const CertifyReport& r) {
         << "\n";
   std::size_t tieOrderBroken = 0;
   for (const TieDecision& t : r.ties) tieOrderBroken += t.orderFollowed ? 0 : 1;
-  out << "  ties: " << r.ties.size() << " (tie order not followed: " << tieOrderBroken << ")\n";
+  out << "  ties: " << r.ties.size() << " (proven exact: " << r.provenTies() << ", within " << tieResolution(r)
+      << " only: " << r.ties.size() - r.provenTies() << "; tie order not followed: " << tieOrderBroken << ")\n";
   out << "  wrong decisions: " << r.wrong.size() << "\n";
-  for (const TieDecision& t : r.ties)
+  for (const TieDecision& t : r.ties) {
     out << "tie at event " << t.eventIndex << ", t = " << both(t.time) << ": " << t.executed.description << " and "
-        << t.other.description << " within " << both(t.within) << "; "
-        << (t.orderFollowed ? "documented tie order followed" : "documented tie order NOT followed") << "\n";
+        << t.other.description;
+    for (const EventRef& e : t.alsoTied) out << " and " << e.description;
+    if (t.proven) out << ", proven exactly equal; ";
+    else out << " within " << both(t.within) << " (not proven exact); ";
+    out << (t.orderFollowed ? "documented tie order followed" : "documented tie order NOT followed") << "\n";
+  }
   for (const WrongDecision& w : r.wrong) out << wrongDecisionLine(w) << "\n";
 }
 
@@ -81,10 +95,15 @@ std::string certifyReportJson(const CertifyReport& r) {
   for (int k = 0; k < kUncertifiedReasonCount; ++k)
     reasons[jsonKey(uncertifiedReasonName(UncertifiedReason(k)))] = r.uncertifiedByReason[std::size_t(k)];
   j["not_certified"] = reasons;
+  j["ties_proven"] = r.provenTies();
   nlohmann::ordered_json ties = nlohmann::ordered_json::array();
-  for (const TieDecision& t : r.ties)
+  for (const TieDecision& t : r.ties) {
+    nlohmann::ordered_json also = nlohmann::ordered_json::array();
+    for (const EventRef& e : t.alsoTied) also.push_back(eventJson(e));
     ties.push_back({{"event", t.eventIndex}, {"time", boundJson(t.time)}, {"executed", eventJson(t.executed)},
-                    {"other", eventJson(t.other)}, {"within", boundJson(t.within)}, {"order_followed", t.orderFollowed}});
+                    {"other", eventJson(t.other)}, {"also_tied", also}, {"proven", t.proven},
+                    {"within", boundJson(t.within)}, {"order_followed", t.orderFollowed}});
+  }
   j["ties"] = ties;
   nlohmann::ordered_json wrong = nlohmann::ordered_json::array();
   for (const WrongDecision& w : r.wrong)

@@ -12,6 +12,7 @@
 #include "gizmo/verify/study_findings.hpp"
 #include "gizmo/verify/study_output.hpp"
 #include "gizmo/verify/study_suite.hpp"
+#include "study_gnuplot.hpp"
 
 extern char** environ;
 
@@ -19,12 +20,6 @@ namespace gizmo::verify {
 namespace {
 
 void writeFile(const std::filesystem::path& path, const std::string& text) { writeStudyFile(path.string(), text); }
-
-std::string asset(const std::string& name) {
-  const char* text = builtInStudyFile("verify/study_assets/" + name);
-  if (text == nullptr) throw StudyOutputError("the built-in asset " + name + " is missing");
-  return text;
-}
 
 // Runs gnuplot with these arguments in folder `dir`, its output appended to dir/gnuplot.log.
 int runGnuplot(const std::filesystem::path& dir, const std::vector<std::string>& args, bool quiet) {
@@ -49,11 +44,6 @@ int runGnuplot(const std::filesystem::path& dir, const std::vector<std::string>&
   return WEXITSTATUS(status);
 }
 
-void gnuplot(const std::filesystem::path& dir, const std::string& variables, const std::string& script) {
-  if (runGnuplot(dir, {"-e", variables, script}, false) != 0)
-    throw StudyOutputError("gnuplot failed on " + script + " (" + variables + "): see " + (dir / "gnuplot.log").string());
-}
-
 // An error of exactly 0 cannot stand on a log scale: it is drawn at this floor.
 constexpr double kErrorFloor = 1e-40;
 
@@ -72,10 +62,10 @@ void drawPareto(const SceneReport& s, const std::filesystem::path& dir) {
   const std::string stem = "pareto-" + s.scene.name;
   writeFile(dir / (stem + ".csv"), paretoData(s, points));
   writeFile(dir / (stem + "-front.csv"), paretoData(s, paretoFront(points)));
-  gnuplot(dir,
-          "datafile='" + stem + ".csv'; frontfile='" + stem + "-front.csv'; outfile='" + stem + ".svg'; scene='" +
-              s.scene.name + "'",
-          "pareto.gp");
+  drawWithGnuplot(dir,
+                  "datafile='" + stem + ".csv'; frontfile='" + stem + "-front.csv'; outfile='" + stem + ".svg'; scene='" +
+                      s.scene.name + "'",
+                  "pareto.gp");
 }
 
 void drawStability(const StudyReport& report, const std::filesystem::path& dir) {
@@ -97,13 +87,24 @@ void drawStability(const StudyReport& report, const std::filesystem::path& dir) 
   writeFile(dir / "stability.csv", data);
   writeFile(dir / "stability-tics.gp", tics);
   const std::string width = std::to_string(300 + 26 * columns.size()), height = std::to_string(260 + 26 * rows.size());
-  gnuplot(dir,
-          "datafile='stability.csv'; ticsfile='stability-tics.gp'; outfile='stability.svg'; width=" + width +
-              "; height=" + height,
-          "stability.gp");
+  drawWithGnuplot(dir,
+                  "datafile='stability.csv'; ticsfile='stability-tics.gp'; outfile='stability.svg'; width=" + width +
+                      "; height=" + height,
+                  "stability.gp");
 }
 
 }  // namespace
+
+std::string studyAsset(const std::string& name) {
+  const char* text = builtInStudyFile("verify/study_assets/" + name);
+  if (text == nullptr) throw StudyOutputError("the built-in asset " + name + " is missing");
+  return text;
+}
+
+void drawWithGnuplot(const std::filesystem::path& dir, const std::string& variables, const std::string& script) {
+  if (runGnuplot(dir, {"-e", variables, script}, false) != 0)
+    throw StudyOutputError("gnuplot failed on " + script + " (" + variables + "): see " + (dir / "gnuplot.log").string());
+}
 
 void requireGnuplot() {
   if (runGnuplot({}, {"--version"}, true) != 0)
@@ -116,9 +117,10 @@ void drawStudyCharts(const StudyReport& report, const std::string& dirName) {
   std::filesystem::create_directories(dir, ec);
   if (ec) throw StudyOutputError(dir.string() + ": cannot create the folder: " + ec.message());
   std::filesystem::remove(dir / "gnuplot.log", ec);
-  for (const char* script : {"pareto.gp", "stability.gp"}) writeFile(dir / script, asset(script));
+  for (const char* script : {"pareto.gp", "stability.gp"}) writeFile(dir / script, studyAsset(script));
   for (const SceneReport& s : report.scenes) drawPareto(s, dir);
   drawStability(report, dir);
+  if (!report.bench.empty()) drawKernelCharts(kernelFigures(report.bench), dir.string());
 }
 
 }  // namespace gizmo::verify

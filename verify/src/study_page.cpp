@@ -12,19 +12,7 @@
 namespace gizmo::verify {
 namespace {
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string escape(const std::string& text) { return studyHtmlText(text); }
 
 std::string g(double v, const char* format = "%.3g") {
   char text[48];
@@ -167,6 +155,20 @@ std::string sceneSection(const SceneReport& s) {
 
 }  // namespace
 
+std::string studyHtmlText(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
 void writeStudyFile(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
@@ -190,6 +192,7 @@ std::string studyPage(const StudyReport& report) {
   replace(html, "FAIL_DISTANCE", g(kFailDistance, "%g"));
   replace(html, "READING", readingText(report));
   replace(html, "STABILITY", stabilityTable(report));
+  replace(html, "KERNELS", report.bench.empty() ? "" : kernelsSection(report.bench, kernelFigures(report.bench)));
   replace(html, "SCENES", scenes);
   return html;
 }
@@ -201,6 +204,11 @@ void writeStudy(const StudyReport& report, const std::string& dirName) {
   if (ec) throw StudyOutputError(dir.string() + ": cannot create the folder: " + ec.message());
   writeStudyFile((dir / "results.csv").string(), studyCsv(report));
   writeStudyFile((dir / "results.json").string(), studyJson(report));
+  if (!report.bench.empty()) {
+    const KernelFigures kernels = kernelFigures(report.bench);
+    writeStudyFile((dir / "kernels.csv").string(), kernelsCsv(kernels));
+    writeStudyFile((dir / "kernels.json").string(), kernelsJson(report.bench, kernels));
+  }
   drawStudyCharts(report, dirName);
   writeStudyFile((dir / "index.html").string(), studyPage(report));
 }

@@ -12,13 +12,7 @@ namespace {
 std::string number(double v) { return studyNumber(v); }
 std::string optionalNumber(const std::optional<double>& v) { return v ? number(*v) : ""; }
 
-// A CSV field: quoted when it holds a separator, a quote or a line break.
-std::string field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
+std::string field(const std::string& text) { return studyCsvField(text); }
 
 nlohmann::ordered_json spread(const Spread& s) { return {{"median", s.median}, {"min", s.min}, {"max", s.max}}; }
 
@@ -34,6 +28,13 @@ bool onFront(const std::vector<ChartPoint>& front, std::size_t index) {
 }
 
 }  // namespace
+
+std::string studyCsvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
 
 std::string studyCsv(const StudyReport& report) {
   std::ostringstream out;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/core/cell_occupancy.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/verify/fuzz/seeded_random.hpp"
 
@@ -19,7 +20,7 @@ constexpr std::array<int, 4> kKeys{32, 37, 39, 65};
 struct Builder {
   SeededRandom& rng;
   BoardSpec& board;
-  bool taken[kBoardSize][kBoardSize] = {};
+  CellOccupancy cells{};
 
   bool isFlipper(GizmoType t) const { return t == GizmoType::LeftFlipper || t == GizmoType::RightFlipper; }
 
@@ -51,12 +52,7 @@ struct Builder {
       g.x = rng.whole(0, kBoardSize - g.width);
       g.y = rng.whole(0, kBoardSize - g.height);
       g.orientation = g.type == GizmoType::Absorber ? 0 : 90 * rng.whole(0, 3);
-      bool free = true;
-      for (int y = g.y; y < g.y + g.height; ++y)
-        for (int x = g.x; x < g.x + g.width; ++x) free = free && !taken[y][x];
-      if (!free) continue;
-      for (int y = g.y; y < g.y + g.height; ++y)
-        for (int x = g.x; x < g.x + g.width; ++x) taken[y][x] = true;
+      if (!cells.place(g)) continue;
       g.name = "G" + std::to_string(i++);
       board.gizmos.push_back(g);
     }

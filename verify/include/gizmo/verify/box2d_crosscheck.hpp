@@ -16,6 +16,7 @@ struct CrosscheckOptions {
   RunRequest request;
   std::vector<double> steps{1.0 / 60, 1.0 / 120, 1.0 / 240, 1.0 / 480};
   Box2dOptions box2d;  // its dt is replaced by each of `steps`
+  bool keepBox2dSamples = false;  // hand each step size's Box2D samples back (for a path file)
 };
 
 // A collision that only one side made: the first of them, for the report.
@@ -48,6 +49,9 @@ struct StepComparison {
   double energyEnd = 0;                 // Box2D's, at the end
   double maxEnergyDifference = 0;       // max over samples of |E_box2d − E_ours| / max(|E_ours|, |E_start|)
   double wallSeconds = 0;
+  // Box2D's balls after each step, from time 0 to the end and the window after it; only with
+  // CrosscheckOptions::keepBox2dSamples.
+  std::vector<TrajectorySample> box2dSamples;
 };
 
 struct CrosscheckReport {

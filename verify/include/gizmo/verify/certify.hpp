@@ -2,7 +2,9 @@
 // Certified decisions (docs/verification.md, "Certified decisions"): a double run re-simulated
 // from its log, and every executed event proven, with interval arithmetic, to have been the
 // earliest for the state the run had just before it. Decisions the double intervals cannot
-// settle climb a ladder of MPFI precisions; what is still unsettled at the top is a tie.
+// settle climb a ladder of MPFI precisions; events that stay overlapping are compared exactly
+// where their gaps are polynomials (a proven tie), and what is still unsettled at the top is a
+// tie within the top rung's resolution.
 #include <array>
 #include <cstdint>
 #include <iosfwd>
@@ -23,10 +25,12 @@ struct CertifyOptions {
   std::uint64_t maxEvents = 0;
 };
 
-// Why a decision is neither certified nor proven wrong nor a tie.
+// Why a decision is neither certified nor proven wrong nor a tie: the search ran out of
+// subdivisions at every rung without a narrow overlap, with a swinging flipper's side or tip
+// among the events left overlapping (their gaps are not polynomials: no exact step), or not.
 enum class UncertifiedReason : std::uint8_t {
-  SwingingFlipper,  // a swinging flipper could not be excluded (its gap is not polynomial)
-  Undecided,        // the search ran out of subdivisions at every rung without a narrow overlap
+  SwingingFlipper,
+  Undecided,
 };
 inline constexpr int kUncertifiedReasonCount = 2;
 std::string uncertifiedReasonName(UncertifiedReason r);
@@ -55,15 +59,21 @@ struct WrongDecision {
   // collision that never happens before the next scheduled event has byAtMost = +inf).
   ExactBound byAtLeast, byAtMost;
   std::string explanation;
-  long rungBits = 53;  // the precision that proved it (53: the double intervals)
+  long rungBits = 53;  // the precision that proved it (53: the double intervals; 0: exact rationals)
 };
 
 struct TieDecision {
   std::uint64_t eventIndex = 0;
   ExactBound time;
   EventRef executed, other;
-  ExactBound within;  // both times lie in one window of this width (seconds)
-  bool orderFollowed = true;  // the run ran them in the documented tie order (runsBefore)
+  // Proven: the times are equal exactly (a common root of their gap polynomials, or a scheduled
+  // time that is a root), `within` is 0 and `alsoTied` lists any further events at that instant.
+  // Otherwise both times lie in one window of width `within` (seconds), below the top rung's
+  // resolution (the gaps involved are not all polynomials, or a root could not be isolated).
+  bool proven = false;
+  ExactBound within;
+  std::vector<EventRef> alsoTied;
+  bool orderFollowed = true;  // the run ran the executed event first in the documented tie order (runsBefore)
 };
 
 struct UncertifiedDecision {
@@ -78,7 +88,8 @@ struct UncertifiedDecision {
 struct CertifyReport {
   std::string model;  // classic or ballistic
   std::uint64_t decisions = 0;
-  // Certified at each rung: [0] the double intervals, then one per CertifyOptions::mpfiBits.
+  // Certified at each rung: [0] the double intervals, then one per CertifyOptions::mpfiBits, then
+  // the exact step (bits 0: two roots closer than the top rung could part, ordered exactly).
   std::vector<long> rungBits;
   std::vector<std::uint64_t> certifiedAtRung;
   std::array<std::uint64_t, kUncertifiedReasonCount> uncertifiedByReason{};
@@ -87,6 +98,7 @@ struct CertifyReport {
   std::vector<WrongDecision> wrong;
 
   std::uint64_t certified() const;
+  std::uint64_t provenTies() const;
   bool allCertified() const { return certified() == decisions; }
 };
 

@@ -1,15 +1,21 @@
 #pragma once
 // One decision at one rung: the executed event against every event that could have come
-// first, with the kernel's gap searches (certify_kernel.hpp). A template over the interval type,
-// like the kernel; only certify_rungs.cpp instantiates it (built with -frounding-math).
+// first, with the kernel's gap searches (certify_kernel.hpp, and certify_swing.hpp for swinging
+// flippers). A template over the interval type, like the kernel; only certify_rungs.cpp
+// instantiates it (built with -frounding-math, and with sin, cos and π for the interval type in
+// scope).
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 #include "gizmo/verify/certify_kernel.hpp"
+#include "gizmo/verify/certify_swing.hpp"
 
 namespace gizmo::verify::detail {
+
+// How far past the window's end the searches look (seconds).
+inline constexpr double kPastWindow = 0x1p-32;
 
 template <class I>
 class Decider {
@@ -28,8 +34,10 @@ class Decider {
     root_ = isRootKind(e.kind);
     const double windowTime = root_ && in.hasNextScheduled ? in.nextScheduled.time : e.time;
     windowEnd_ = I(windowTime) - I(snap.now);
-    const I end = upperEnd(windowEnd_);
-    const I window = hull(I(0.0), end);
+    const I window = hull(I(0.0), upperEnd(windowEnd_));
+    // The searches reach a little past the window's end, so that a contact exactly at it has
+    // an enclosure (g is 0 there, not below) and can be proven tied with it, or later.
+    const I end = upperEnd(upperEnd(windowEnd_) + I(kPastWindow));
 
     motions_.clear();
     boxes_.clear();
@@ -37,30 +45,35 @@ class Decider {
       motions_.push_back(motionOf<I>(b, snap.now));
       boxes_.push_back(sweptBoxOf(motions_.back(), window, r_));
     }
-    // A swinging flipper's gap turns with sin and cos: not certified here. It only matters if a
-    // ball can reach its box within the window.
-    for (const FlipperSnapshot& f : snap.flippers) {
-      if (!f.swinging) continue;
-      const Box<double>& reach = layout_.gizmos[std::size_t(f.id)].bounds;
-      for (std::size_t i = 0; i < snap.balls.size(); ++i)
-        if (!snap.balls[i].captured && boxes_[i].overlaps(reach)) {
-          RungOutcome out;
-          out.verdict = Verdict::SwingingFlipper;
-          out.other = EventKey{EventKind::Collision, f.id, snap.balls[i].id, -1};
-          return out;
-        }
-    }
+    // Built before any gap points into it. The window never runs past a swing's end: the
+    // flipper's stop is a scheduled event, so it bounds the window.
+    axes_.clear();
+    for (const FlipperSnapshot& f : snap.flippers)
+      if (f.swinging) axes_.push_back(swingAxisOf<I>(layout_.gizmos[std::size_t(f.id)], f, snap.now));
 
-    RungOutcome out;
-    if (root_) {
-      if (!claimedEntry(end, out)) return out;
-      competitorEnd_ = hi_;
-    } else {
-      competitorEnd_ = end;
-    }
     best_ = RungOutcome{};
     best_.verdict = Verdict::Certified;
-    forEachRival([&](const Gap<I>& gap) { judge(gap); });
+    if (root_) {
+      RungOutcome out;
+      if (!claimedEntry(end, out)) return out;
+      competitorEnd_ = hi_;
+      best_.ownLo = lowerDouble(lo_);
+      best_.ownHi = upperDouble(hi_);
+      best_.ownPolynomial = ownSwing_.empty();
+      if (!certainlyNotAfter(hi_, windowEnd_)) {
+        // The next scheduled event may come first: it overlaps the entry.
+        best_.verdict = Verdict::Undecided;
+        best_.other = keyOf(in.nextScheduled);
+        best_.otherIsScheduled = true;
+        best_.window = widthUpper(hull(hull(lo_, hi_), windowEnd_));
+        best_.overlaps.push_back(Overlap{best_.other, true, true, true, lowerDouble(windowEnd_), upperDouble(windowEnd_)});
+      }
+    } else {
+      competitorEnd_ = end;
+      best_.ownLo = lowerDouble(windowEnd_);
+      best_.ownHi = upperDouble(windowEnd_);
+    }
+    forEachRival([&](const auto& gap) { judge(gap); });
     return best_;
   }
 
@@ -77,22 +90,24 @@ class Decider {
   }
 
   // The executed root event's own entry, [lo_, hi_]; false (with `out` filled) when it cannot
-  // be shown to happen before the next scheduled event.
+  // be shown to happen at all before the next scheduled event, or not with certainty.
   bool claimedEntry(const I& end, RungOutcome& out) {
     own_.clear();
-    ownGaps(own_);
+    ownSwing_.clear();
+    ownGaps();
     bool certain = false, any = false;
     I lo, hi;
-    for (const Gap<I>& gap : own_) {
-      const SearchResult<I> r = firstEntry(gap, end, limits_, stack_);
-      if (r.found == Found::None) continue;
+    auto absorb = [&](const SearchResult<I>& r) {
+      if (r.found == Found::None) return;
       lo = any ? (certainlyBefore(r.lo, lo) ? lowerEnd(r.lo) : lowerEnd(hull(lo, r.lo))) : lowerEnd(r.lo);
       any = true;
       if (r.found == Found::Entry) {
         hi = certain ? upperEnd(intersectMin(hi, r.hi)) : upperEnd(r.hi);
         certain = true;
       }
-    }
+    };
+    for (const Gap<I>& gap : own_) absorb(firstEntry(gap, end, limits_, stack_));
+    for (const SwingGap<I>& gap : ownSwing_) absorb(firstSwingEntry(gap, end, limits_, stack_));
     out.other = keyOf(in_->nextScheduled);
     out.otherIsScheduled = true;
     if (!any) {
@@ -103,47 +118,52 @@ class Decider {
       out.explanation = "the claimed contact has no entry before the next scheduled event (a miss, or later)";
       return false;
     }
+    if (in_->hasNextScheduled && certainlyBefore(windowEnd_, lo)) {
+      out.verdict = Verdict::Wrong;
+      out.byLo = std::max(0.0, lowerDouble(lo - windowEnd_));
+      out.byHi = certain ? upperDouble(hi - windowEnd_) : std::numeric_limits<double>::infinity();
+      out.explanation = "the claimed contact comes certainly after the next scheduled event";
+      return false;
+    }
     if (!certain) {
       out.verdict = Verdict::Undecided;
       out.window = std::numeric_limits<double>::infinity();
       out.other = executed_;
       out.otherIsScheduled = false;
+      out.ownPolynomial = ownSwing_.empty();
       return false;
     }
     lo_ = lo;
     hi_ = hi;
-    if (!certainlyNotAfter(hi_, windowEnd_)) {
-      out.verdict = Verdict::Undecided;
-      out.window = widthUpper(hull(hull(lo_, hi_), windowEnd_));
-      return false;
-    }
     return true;
   }
 
   // The smaller upper end of two points (for the minimum of several entries).
   static I intersectMin(const I& a, const I& b) { return certainlyBefore(b, a) ? b : a; }
 
-  void ownGaps(std::vector<Gap<I>>& out) {
+  void ownGaps() {
     const Event<double>& e = in_->executed;
     if (e.kind == EventKind::ContactEnd) {
       const std::size_t i = ballSlot(e.a);
-      contactEndGaps(motions_[i], snap_->balls[i], executed_, out);
+      contactEndGaps(motions_[i], snap_->balls[i], executed_, own_);
       return;
     }
     if (e.kind == EventKind::Leave) {
-      leaveGaps(motions_[ballSlot(e.b)], layout_.gizmos[std::size_t(e.a)].rect, I(r_), executed_, out);
+      leaveGaps(motions_[ballSlot(e.b)], layout_.gizmos[std::size_t(e.a)].rect, I(r_), executed_, own_);
       return;
     }
     // A collision: e.a is the collider (the gizmo, or the lower ball), e.b the ball.
     if (layout_.ballIndex[std::size_t(e.a)] >= 0) {
-      out.push_back(ballPairGap(ballSlot(e.a), ballSlot(e.b)));
+      own_.push_back(ballPairGap(ballSlot(e.a), ballSlot(e.b)));
       return;
     }
     const std::size_t i = ballSlot(e.b);
-    featureGaps(e.a, i, [&](const Gap<I>& gap) {
-      if (sameEvent(gap.key, executed_)) out.push_back(gap);
+    featureGaps(e.a, i, [&](const auto& gap) {
+      if (sameEvent(gap.key, executed_)) keepOwn(gap);
     }, /*skipOwn=*/false);
   }
+  void keepOwn(const Gap<I>& gap) { own_.push_back(gap); }
+  void keepOwn(const SwingGap<I>& gap) { ownSwing_.push_back(gap); }
 
   std::size_t ballSlot(GizmoId id) const { return std::size_t(layout_.ballIndex[std::size_t(id)]); }
 
@@ -162,13 +182,17 @@ class Decider {
     const Motion<I>& m = motions_[i];
     const Geometry* geometry = &fixed_[std::size_t(g)];
     Geometry still;
+    const I r(r_);
     if (layout_.gizmos[std::size_t(g)].kind == LayoutKind::Flipper) {
       const FlipperSnapshot* fs = flipperState(g);
-      if (!fs || fs->swinging) return;  // swinging flippers were excluded by their boxes
+      if (!fs) return;
+      if (fs->swinging) {
+        swingingGaps(g, i, f, skipOwn);
+        return;
+      }
       still = geometryOf(fs->still);
       geometry = &still;
     }
-    const I r(r_);
     std::int32_t feature = 0;
     auto skipped = [&](std::int32_t k) {
       return ball.contactGizmo == g &&
@@ -189,6 +213,25 @@ class Decider {
       const bool own = sameEvent(key, executed_);
       if (!skipped(feature) && !(skipOwn && own)) f(roundGap(Vec2<I>(m.p - centre), m.v, m.h, I(r + radius), key));
       ++feature;
+    }
+  }
+
+  // A swinging flipper's features: the pivot end turns in place (a fixed circle), the sides and
+  // the tip move. A ball never slides on a moving flipper (its contact ends when the swing
+  // starts), so none is skipped.
+  template <class F>
+  void swingingGaps(GizmoId g, std::size_t i, F&& f, bool skipOwn) {
+    const SwingAxis<I>* axis = nullptr;
+    for (const SwingAxis<I>& a : axes_)
+      if (a.id == g) axis = &a;
+    if (!axis) return;
+    const Motion<I>& m = motions_[i];
+    const I r(r_);
+    for (std::int32_t feature = 0; feature < 4; ++feature) {
+      const EventKey key{EventKind::Collision, g, snap_->balls[i].id, feature};
+      if (skipOwn && sameEvent(key, executed_)) continue;
+      if (feature == 2) f(roundGap(Vec2<I>(m.p - axis->pivot), m.v, m.h, I(r + axis->radius), key));
+      else f(swingGapOf(m, *axis, r, key));
     }
   }
 
@@ -255,11 +298,16 @@ class Decider {
     }
   }
 
+  void judge(const Gap<I>& gap) { judgeSearch(firstEntry(gap, competitorEnd_, limits_, stack_), gap.key, true); }
+  void judge(const SwingGap<I>& gap) {
+    judgeSearch(firstSwingEntry(gap, competitorEnd_, limits_, stack_), gap.key, false);
+  }
+
   // One rival: certainly later (nothing to do), certainly earlier (a wrong decision; the
-  // earliest such is kept), or not separable at this precision.
-  void judge(const Gap<I>& gap) {
-    const SearchResult<I> r = firstEntry(gap, competitorEnd_, limits_, stack_);
+  // earliest such is kept), or not separable at this precision (kept for the exact step).
+  void judgeSearch(const SearchResult<I>& r, const EventKey& key, bool polynomial) {
     if (r.found == Found::None) return;
+    if (r.found == Found::Entry && certainlyBefore(root_ ? hi_ : windowEnd_, r.lo)) return;  // later
     if (r.found == Found::Entry) {
       // Root event: the rival's entry must come before ours. Scheduled event: a contact at or
       // before its time runs first (collisions come first in the tie order).
@@ -270,7 +318,7 @@ class Decider {
         if (best_.verdict != Verdict::Wrong || lowerDouble(r.hi) < earliestWrong_) {
           earliestWrong_ = upperDouble(r.hi);
           best_.verdict = Verdict::Wrong;
-          best_.other = gap.key;
+          best_.other = key;
           best_.otherIsScheduled = false;
           best_.byLo = std::max(0.0, lowerDouble(by));
           best_.byHi = upperDouble(by);
@@ -284,9 +332,11 @@ class Decider {
     const I mine = root_ ? hull(lo_, hi_) : windowEnd_;
     const I theirs = r.found == Found::Entry ? hull(r.lo, r.hi) : hull(r.lo, competitorEnd_);
     const double width = widthUpper(hull(mine, theirs));
+    best_.overlaps.push_back(
+        Overlap{key, false, r.found == Found::Entry, polynomial, lowerDouble(theirs), upperDouble(theirs)});
     if (best_.verdict == Verdict::Certified || best_.window < width) {
       best_.verdict = Verdict::Undecided;
-      best_.other = gap.key;
+      best_.other = key;
       best_.otherIsScheduled = false;
       best_.window = width;
     }
@@ -306,6 +356,8 @@ class Decider {
   std::vector<Box<double>> boxes_;
   std::vector<GizmoId> candidates_;
   std::vector<Gap<I>> own_, rivals_;
+  std::vector<SwingGap<I>> ownSwing_;
+  std::vector<SwingAxis<I>> axes_;
   std::vector<std::pair<I, I>> stack_;
   RungOutcome best_;
   double earliestWrong_ = 0;

@@ -192,12 +192,82 @@ struct SearchResult {
   I lo, hi;
 };
 
-// The first entry of a gap in s ∈ [0, end]: leftmost-first subdivision. A piece [u, v] holds no
-// entry in (u, v] when the gap is certainly positive on it, certainly rising (g' > 0: it cannot
-// go from > 0 to ≤ 0), certainly negative (nothing to cross from), or the contact point is
-// certainly off the segment. A piece with g(u) > 0 > g(v) and the contact certainly on the
-// segment holds the first entry, which bisection then narrows.
-// `stack` is scratch space, passed in so that a search allocates nothing once it has grown.
+// What a search learns about one piece S of the window: where the contact point lies, and
+// whether the piece is free of entries in its interior and right end (the gap certainly positive
+// on it, certainly negative: nothing to cross from, or certainly rising: it cannot go from > 0 to
+// ≤ 0). `free` is only looked at when the contact is not certainly off the segment.
+struct Piece {
+  Side side = Side::Unknown;
+  bool free = false;
+};
+
+// The leftmost-first subdivision of s ∈ [0, end], shared by the polynomial gaps and the swinging
+// flipper's (certify_swing.hpp). A model gives examine(S) → Piece and at(s) → the gap at a point.
+// A piece with g(u) > 0 > g(v) and the contact certainly on the segment holds the first entry,
+// which bisection then narrows. `stack` is scratch space, passed in so that a search allocates
+// nothing once it has grown.
+template <class I, class Model>
+SearchResult<I> subdivide(const Model& model, const I& end, const SearchLimits& limits,
+                          std::vector<std::pair<I, I>>& stack) {
+  SearchResult<I> result;
+  stack.clear();
+  stack.emplace_back(I(0.0), end);
+  int budget = limits.pieces;
+  while (!stack.empty()) {
+    const I u = stack.back().first, v = stack.back().second;
+    stack.pop_back();
+    const I S = hull(u, v);
+    const Piece piece = model.examine(S);
+    if (piece.side == Side::Outside || piece.free) continue;
+    if (piece.side == Side::Inside) {
+      const I gu = model.at(u), gv = model.at(v);
+      if (certainlyPositive(gu) && certainlyNegative(gv)) {
+        I a = u, b = v;
+        for (int k = 0; k < limits.narrowingSteps; ++k) {
+          const I m = midpoint(hull(a, b));
+          if (!(certainlyBefore(a, m) && certainlyBefore(m, b))) break;
+          const I gm = model.at(m);
+          if (certainlyPositive(gm)) a = m;
+          else if (certainlyNegative(gm)) b = m;
+          else break;
+        }
+        result.found = Found::Entry;
+        result.lo = a;
+        result.hi = b;
+        return result;
+      }
+    }
+    const I m = midpoint(S);
+    if (--budget <= 0 || !(certainlyBefore(u, m) && certainlyBefore(m, v))) {
+      result.found = Found::Undecided;
+      result.lo = u;
+      result.hi = v;
+      return result;
+    }
+    stack.emplace_back(m, v);
+    stack.emplace_back(u, m);
+  }
+  return result;
+}
+
+// The search interface for a polynomial gap.
+template <class I>
+struct PolyModel {
+  const Gap<I>& gap;
+  const Poly<I>& dg;  // the gap's derivative
+
+  Piece examine(const I& S) const {
+    Piece piece;
+    piece.side = contactSide(gap, S);
+    if (piece.side == Side::Outside) return piece;
+    const I G = rangeOver(gap.g, dg, S);
+    piece.free = certainlyPositive(G) || certainlyNegative(G) || certainlyPositive(dg.at(S));
+    return piece;
+  }
+  I at(const I& s) const { return gap.g.at(s); }
+};
+
+// The first entry of a gap in s ∈ [0, end]: an entry at s = 0 from contact, else the subdivision.
 template <class I>
 SearchResult<I> firstEntry(const Gap<I>& gap, const I& end, const SearchLimits& limits,
                            std::vector<std::pair<I, I>>& stack) {
@@ -224,47 +294,7 @@ SearchResult<I> firstEntry(const Gap<I>& gap, const I& end, const SearchLimits& 
       certainlyNotAfter(I(square(gap.g.c[1]) - I(4.0) * gap.g.c[0] * gap.g.c[2]), zero))
     return result;
   const Poly<I> dg = gap.g.derivative();
-  stack.clear();
-  stack.emplace_back(zero, end);
-  int budget = limits.pieces;
-  while (!stack.empty()) {
-    const I u = stack.back().first, v = stack.back().second;
-    stack.pop_back();
-    const I S = hull(u, v);
-    const Side side = contactSide(gap, S);
-    if (side == Side::Outside) continue;
-    const I G = rangeOver(gap.g, dg, S);
-    if (certainlyPositive(G) || certainlyNegative(G)) continue;
-    if (certainlyPositive(dg.at(S))) continue;
-    if (side == Side::Inside) {
-      const I gu = gap.g.at(u), gv = gap.g.at(v);
-      if (certainlyPositive(gu) && certainlyNegative(gv)) {
-        I a = u, b = v;
-        for (int k = 0; k < limits.narrowingSteps; ++k) {
-          const I m = midpoint(hull(a, b));
-          if (!(certainlyBefore(a, m) && certainlyBefore(m, b))) break;
-          const I gm = gap.g.at(m);
-          if (certainlyPositive(gm)) a = m;
-          else if (certainlyNegative(gm)) b = m;
-          else break;
-        }
-        result.found = Found::Entry;
-        result.lo = a;
-        result.hi = b;
-        return result;
-      }
-    }
-    const I m = midpoint(S);
-    if (--budget <= 0 || !(certainlyBefore(u, m) && certainlyBefore(m, v))) {
-      result.found = Found::Undecided;
-      result.lo = u;
-      result.hi = v;
-      return result;
-    }
-    stack.emplace_back(m, v);
-    stack.emplace_back(u, m);
-  }
-  return result;
+  return subdivide(PolyModel<I>{gap, dg}, end, limits, stack);
 }
 
 // Leave an absorber: the centre crosses one side of the rectangle grown by r outwards

@@ -23,6 +23,10 @@ struct LayoutGizmo {
   Shape<double> shape;   // fixed shapes and absorbers (a flipper's comes with each state)
   Box<double> bounds;    // everything the gizmo can ever touch (a flipper: its 2 × 2 box)
   std::array<double, 4> rect{};  // absorbers: x, y, width, height
+  // Flippers: the pivot centre, the quarter turns of the rest and end positions, and the sense
+  // of the forward swing (+1: θ grows), as flipperLayout gives them.
+  Vec2<double> pivot;
+  int restQuarter = 0, endQuarter = 0, forwardSign = 1;
 };
 
 struct BoardLayout {
@@ -56,6 +60,13 @@ struct FlipperSnapshot {
   GizmoId id = kNoGizmo;
   bool swinging = false;
   Shape<double> still;  // when not swinging: the capsule where it stands
+  // When swinging: the axis points at the exact quarter turn `quarter` (the rest position, or
+  // the end one when the swing starts back from there) turned by
+  // forwardSign·6π·offset + turn·6π·(t − t0), the run's doubles t0 and offset (the progress
+  // beyond that quarter) taken as exact; turn = forwardSign·direction, the sense it turns in.
+  int quarter = 0;
+  double offset = 0, t0 = 0;
+  int turn = 0;
 };
 
 struct AbsorberSnapshot {
@@ -98,8 +109,18 @@ inline bool tieOrderBefore(const EventKey& x, const EventKey& y) {
   return x.feature < y.feature;
 }
 
-// What one rung of the ladder concluded about a decision.
-enum class Verdict : std::uint8_t { Certified, Wrong, Undecided, SwingingFlipper };
+// An event that a rung could not separate from the executed one, kept for the exact step
+// (certify_exact.hpp). Times are s = t − now, rounded outwards to doubles.
+struct Overlap {
+  EventKey key;
+  bool scheduled = false;   // the next scheduled event (its time is exact: DecisionInput::nextScheduled)
+  bool entry = false;       // a proven entry in [lo, hi]; otherwise it may lie anywhere in [lo, hi]
+  bool polynomial = true;   // its gap is a polynomial (not a swinging flipper's side or tip)
+  double lo = 0, hi = 0;
+};
+
+// What one rung of the ladder concluded about a decision. Tie: proven exactly (the exact step).
+enum class Verdict : std::uint8_t { Certified, Wrong, Undecided, Tie };
 struct RungOutcome {
   Verdict verdict = Verdict::Undecided;
   EventKey other;               // Wrong: the event that should have come first; Undecided: the rival
@@ -107,6 +128,13 @@ struct RungOutcome {
   double byLo = 0, byHi = 0;    // Wrong: it came first by at least byLo and at most byHi seconds
   double window = 0;            // Undecided: both may lie in one window this wide (seconds); inf if unknown
   std::string explanation;
+  // Undecided: the executed event's own enclosure (s, outwards; a root event's entry, or the
+  // scheduled time) and every event overlapping it.
+  double ownLo = 0, ownHi = 0;
+  bool ownPolynomial = true;
+  std::vector<Overlap> overlaps;
+  // Tie: the events that happen at exactly the executed event's time.
+  std::vector<EventKey> tiedWith;
 };
 
 inline bool isRootKind(EventKind k) {

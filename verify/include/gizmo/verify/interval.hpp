@@ -85,6 +85,9 @@ class Interval {
     return Interval(lo, hi);
   }
 
+  // π lies strictly between these neighbouring doubles (0x1.921fb54442d18p+1 is the nearest, below).
+  static Interval pi() { return Interval(0x1.921fb54442d18p+1, 0x1.921fb54442d19p+1); }
+
   static Interval whole() {
     const double inf = std::numeric_limits<double>::infinity();
     return Interval(-inf, inf);

@@ -70,6 +70,28 @@ class MpfiInterval {
     return r;
   }
 
+  // MPFI encloses π, sin and cos rigorously at the working precision (outward rounding), over
+  // any interval argument.
+  static MpfiInterval pi() {
+    MpfiInterval r;
+    mpfi_const_pi(r.v_);
+    return r;
+  }
+  friend MpfiInterval sin(const MpfiInterval& x) {
+    MpfiInterval r;
+    mpfi_sin(r.v_, x.v_);
+    return r;
+  }
+  friend MpfiInterval cos(const MpfiInterval& x) {
+    MpfiInterval r;
+    mpfi_cos(r.v_, x.v_);
+    return r;
+  }
+  friend void sinCos(const MpfiInterval& x, MpfiInterval& sine, MpfiInterval& cosine) {
+    sine = sin(x);
+    cosine = cos(x);
+  }
+
   static MpfiInterval whole() {
     MpfiInterval r;
     mpfr_set_inf(&r.v_->left, -1);

@@ -11,6 +11,7 @@
 
 #include "gizmo/core/math/precision.hpp"
 #include "gizmo/core/run/run.hpp"
+#include "gizmo/verify/study_bench.hpp"
 
 namespace gizmo::verify {
 
@@ -108,6 +109,8 @@ struct StudyReport {
   StudyPlan plan;
   std::string box2dVersion;
   std::vector<SceneReport> scenes;
+  // gizmo_bench's figures (`gizmo study --bench`), charted beside the runs; none: no Kernels part.
+  BenchResults bench;
 };
 
 // Called before each method runs, for progress output.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "gizmo/verify/study.hpp"
+#include "gizmo/verify/study_kernels.hpp"
 
 namespace gizmo::verify {
 
@@ -26,12 +27,24 @@ void drawStudyCharts(const StudyReport& report, const std::string& dir);
 
 std::string studyPage(const StudyReport& report);  // DIR/index.html, charts linked from charts/
 
+// With gizmo_bench's figures (StudyReport::bench): the kernel charts' points as CSV (one row per
+// point), everything read as JSON (the files' context, every figure, the points), the charts
+// (DIR/charts/kernels-CHART.svg, with their data and kernels.gp) and the page's Kernels part.
+std::string kernelsCsv(const KernelFigures& kernels);
+std::string kernelsJson(const BenchResults& bench, const KernelFigures& kernels);
+void drawKernelCharts(const KernelFigures& kernels, const std::string& chartsDir);
+std::string kernelsSection(const BenchResults& bench, const KernelFigures& kernels);  // empty without figures
+std::string kernelRatioText(double ratio);  // "×1.55", "×2646": as the charts' labels and the tables give it
+
 // The helpers the writers share: a whole file written or StudyOutputError, and a number as
 // the tables and chart data give it (9 significant digits).
 void writeStudyFile(const std::string& path, const std::string& text);
 std::string studyNumber(double value);
+std::string studyCsvField(const std::string& text);  // quoted when it holds a separator, a quote or a line break
+std::string studyHtmlText(const std::string& text);  // &, <, > and " escaped
 
-// All of the above: DIR/results.csv, DIR/results.json, DIR/charts/, DIR/index.html.
+// All of the above: DIR/results.csv, DIR/results.json, DIR/charts/, DIR/index.html, and with
+// gizmo_bench's figures DIR/kernels.csv and DIR/kernels.json.
 void writeStudy(const StudyReport& report, const std::string& dir);
 
 }  // namespace gizmo::verify
