@@ -267,15 +267,12 @@ struct PolyModel {
   I at(const I& s) const { return gap.g.at(s); }
 };
 
-// The first entry of a gap in s ∈ [0, end]: an entry at s = 0 from contact, else the subdivision.
+// What the start alone decides: an entry at s = 0 (touching and closing, on the feature), or
+// nothing certain over the whole window; otherwise the search goes on (nullopt).
 template <class I>
-SearchResult<I> firstEntry(const Gap<I>& gap, const I& end, const SearchLimits& limits,
-                           std::vector<std::pair<I, I>>& stack) {
-  SearchResult<I> result;
-  if (gap.g.degree == 0) return result;  // constant: never crosses
+std::optional<SearchResult<I>> decidedAtStart(Tri closing, Side sideAtStart, const I& end) {
   const I zero(0.0);
-  const Tri closing = closingAtStart(gap.g);
-  const Side sideAtStart = contactSide(gap, zero);
+  SearchResult<I> result;
   if (closing == Tri::Yes && sideAtStart == Side::Inside) {
     result.found = Found::Entry;
     result.lo = result.hi = zero;
@@ -287,6 +284,19 @@ SearchResult<I> firstEntry(const Gap<I>& gap, const I& end, const SearchLimits& 
     result.hi = end;
     return result;
   }
+  return std::nullopt;
+}
+
+// The first entry of a gap in s ∈ [0, end]: an entry at s = 0 from contact, else the subdivision.
+template <class I>
+SearchResult<I> firstEntry(const Gap<I>& gap, const I& end, const SearchLimits& limits,
+                           std::vector<std::pair<I, I>>& stack) {
+  SearchResult<I> result;
+  if (gap.g.degree == 0) return result;  // constant: never crosses
+  const I zero(0.0);
+  const Tri closing = closingAtStart(gap.g);
+  const Side sideAtStart = contactSide(gap, zero);
+  if (const std::optional<SearchResult<I>> decided = decidedAtStart(closing, sideAtStart, end)) return *decided;
   // A quadratic that opens upwards with no two real roots is never negative, so it has no entry
   // anywhere: that settles exact tangencies (a straight pass at exactly the touching distance,
   // where the discriminant is exactly 0), which no subdivision can.

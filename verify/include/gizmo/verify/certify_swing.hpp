@@ -155,18 +155,7 @@ SearchResult<I> firstSwingEntry(const SwingGap<I>& gap, const I& end, const Sear
     const bool off = certainlyNegative(start.along) || certainlyBefore(gap.axis->length, start.along);
     sideAtStart = on ? Side::Inside : off ? Side::Outside : Side::Unknown;
   }
-  SearchResult<I> result;
-  if (closing == Tri::Yes && sideAtStart == Side::Inside) {
-    result.found = Found::Entry;
-    result.lo = result.hi = zero;
-    return result;
-  }
-  if (closing == Tri::Unknown || (closing == Tri::Yes && sideAtStart == Side::Unknown)) {
-    result.found = Found::Undecided;
-    result.lo = zero;
-    result.hi = end;
-    return result;
-  }
+  if (const std::optional<SearchResult<I>> decided = decidedAtStart(closing, sideAtStart, end)) return *decided;
   return subdivide(SwingModel<I>{gap}, end, limits, stack);
 }
 
