@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "gizmo/core/run/run.hpp"
 
@@ -31,5 +32,20 @@ std::string propertyNames();
 
 // The run that models-agree compares: the same board with gravity 0 and friction 0.
 RunRequest withoutForces(const RunRequest& run);
+
+// One physical decision of a run, as models-agree compares them: collisions, leaves, flipper
+// stops and inputs (with the balls they changed), triggers, actions and model rules.
+struct PhysicalDecision {
+  std::string what;
+  std::int32_t feature = -1;  // of a collision
+  double time = 0;
+  std::vector<double> values;  // positions and velocities after
+  bool negligible = false;     // a hit that changed no velocity by more than the tolerance
+};
+
+// models-agree's judgement of the two models' decisions (docs/fuzzing.md, "When the models may
+// part"): they agree, or part where rounding may part them, or one takes a different decision
+// while the states agree.
+PropertyResult compareModelDecisions(std::vector<PhysicalDecision> classic, std::vector<PhysicalDecision> ballistic);
 
 }  // namespace gizmo::verify::fuzz
