@@ -38,15 +38,12 @@ RC_GTEST_PROP(Generator, MakesValidBoards, ()) {
   for (std::size_t i = 1; i < run.keys.size(); ++i) RC_ASSERT(run.keys[i - 1].time <= run.keys[i].time);
 }
 
-// no-tunnelling and models-agree are not run here: with this seed they fail on two open core bugs
-// (a flipper that starts to swing into a ball touching it passes through it; the two models
-// decide differently at an exact tangency with a flipper's tip), written up with their minimal
-// boards in docs/fuzzing.md. `gizmo fuzz --property no-tunnelling` and `--property models-agree`
-// find them; they return here when the core is fixed.
 RC_GTEST_PROP(Properties, Energy, ()) { requireProperty("energy", *arbitraryRun()); }
 RC_GTEST_PROP(Properties, EventQueue, ()) { requireProperty("event-queue", *arbitraryRun()); }
 RC_GTEST_PROP(Properties, ReplayIdentity, ()) { requireProperty("replay-identity", *arbitraryRun()); }
 RC_GTEST_PROP(Properties, RoundTrip, ()) { requireProperty("round-trip", *arbitraryRun()); }
+RC_GTEST_PROP(Properties, NoTunnelling, ()) { requireProperty("no-tunnelling", *arbitraryRun()); }
+RC_GTEST_PROP(Properties, ModelsAgree, ()) { requireProperty("models-agree", *arbitraryRun()); }
 
 }  // namespace
 }  // namespace gizmo::test

@@ -2,6 +2,7 @@
 // the reference numbers of physics.md §8 in both models, and long runs that must not stall.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -382,6 +383,75 @@ TEST(Flipper, PinchedBallBlocksTheSwingInsteadOfLooping) {
   int flipperHits = 0;
   for (const auto& e : rec.ofKind(EventKind::Collision)) flipperHits += e.event.a == F && e.event.time <= blockedAt;
   EXPECT_LE(flipperHits, board->params().pinchLimit + 1);
+}
+
+// A ball at rest touching a flipper's pivot end, across the axis from it, is in the way of the
+// side when the flipper swings: at the pivot the side does not move, so there is no closing speed,
+// but the turning side sweeps into the ball (docs/physics.md: a moving flipper pressing a touching
+// ball). It must be struck when the swing starts, never passed through.
+TEST(Flipper, SwingIntoATouchingBallAtThePivotStrikesIt) {
+  BoardSpec s = emptyBoard(0, 0, 0);
+  s.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "F", 6, 12, 270));
+  s.balls.push_back(ballAt("B", 6.25, 13.25));  // touches the pivot end at (6.25, 13.75)
+  s.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, "F", {}});
+  auto board = build(s);
+  Recorder<double> rec;
+  board->setObserver(&rec);
+  board->scheduleInput(0.15, 32, KeyDirection::Down);
+  const GizmoId F = *board->find("F"), B = *board->find("B");
+  const auto& flipper = dynamic_cast<const Flipper<double>&>(board->gizmo(F));
+  const auto& ball = board->ballById(B);
+  // Sampled through the swing: the ball's centre never comes nearer the flipper's axis than the
+  // two radii (less a rounding margin).
+  double nearest = 1.0;
+  for (int k = 1; k <= 360; ++k) {  // to 0.3 s: the swing and its stop
+    board->tick(1.0 / 1200);
+    if (!flipper.swinging()) continue;
+    const SwingingAxis<double> axis = flipper.axisAt(board->now());
+    const Vec2<double> u = axis.direction(0.0);
+    const Vec2<double> q = ball.positionAt(board->now()) - axis.pivot;
+    const double along = std::clamp(dot(q, u), 0.0, axis.length);
+    nearest = std::min(nearest, length(q - along * u));
+  }
+  const Event<double>* hit = firstCollisionWith(rec, F, B);
+  ASSERT_NE(hit, nullptr);
+  EXPECT_EQ(hit->time, 0.15);  // struck as the swing starts
+  EXPECT_GE(nearest, 0.5 - 1e-9);
+}
+
+// A ball at rest exactly on the top of a circle bumper must stay there (balanced), not rattle
+// with the minimum bounce at ~1250 hits a second for the whole run.
+TEST(LongRuns, BallBalancedOnTopOfACircleComesToRest) {
+  BoardSpec s = emptyBoard(25, 0, 0);
+  s.gizmos.push_back(gizmoAt(GizmoType::Circle, "C", 10, 10));
+  s.balls.push_back(ballAt("B", 10.5, 9.75));  // exactly on the top of the circle (10.5, 10.5)
+  // Ballistic only: the classic model's ball gains g·maxTick between ticks and bounces off the
+  // top at that speed, never slowly (the seed's method; physics.md §6).
+  auto board = build(s, MotionModel::Ballistic);
+  Recorder<double> rec;
+  board->setObserver(&rec);
+  board->tick(60.0);
+  EXPECT_EQ(rec.ofKind(EventKind::Collision).size(), 1u);
+  EXPECT_EQ(rec.countRule(ModelRule::Wedged), 1);
+  EXPECT_EQ(board->ballById(*board->find("B")).positionAt(board->now()), Vec2<double>(10.5, 9.75));
+}
+
+// A tangency with a round feature, to within rounding, is a graze in both motion models: a ball
+// running along a square's top edge passes its corners without a collision, whatever rounding
+// makes of the (near) double root of its gap (docs/physics.md: grazes).
+TEST(Reflection, GrazingACornerIsNoCollisionInEitherModel) {
+  BoardSpec s = emptyBoard(0, 0, 0);
+  s.gizmos.push_back(gizmoAt(GizmoType::Square, "S", 12, 11));
+  // Its bottom runs two ulps below y = 11, the square's top: it dips 3.6e-15 L into each corner.
+  const double y = std::nextafter(std::nextafter(10.75, 11.0), 11.0);
+  s.balls.push_back(ballAt("B", 3.3, y, 47.1, 0));
+  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
+    auto board = build(s, model);
+    Recorder<double> rec;
+    board->setObserver(&rec);
+    board->tick(0.3);  // reaches the right wall at about 0.35 s
+    EXPECT_EQ(firstCollisionOf(rec, *board->find("B")), nullptr) << "model " << int(model);
+  }
 }
 
 // --- the seed's procedure ----------------------------------------------------------------------------

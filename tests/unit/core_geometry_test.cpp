@@ -148,6 +148,23 @@ TEST(TimeOfImpact, SegmentMissesBeyondItsEndsAndFromBehind) {
   EXPECT_EQ(*now, 0.0);
 }
 
+// docs/physics.md, sliding ends: a ball closer to a segment's end than the position resolution
+// (4ε(|x| + |y|), 8.7e-15 L here) and moving out over it has left the segment: it cannot get any
+// nearer by moving, and hitting the edge again would begin a contact that ends at once, for ever.
+TEST(TimeOfImpact, ABallWithinThePositionResolutionOfAnEdgesEndLeavesOverIt) {
+  const SegmentFeature<double> top = makeSegment(Vec2<double>(5.1, 5), Vec2<double>(6, 5));  // normal (0,−1)
+  auto onTop = [](double x, double vx) { return Trajectory<double>{{x, 4.75}, {vx, 0}, {0, 25}}; };
+  ASSERT_LT(4e-15, positionResolution(Vec2<double>(5.1, 4.75)));
+  EXPECT_FALSE(segmentTimeOfImpact(onTop(5.1 + 4e-15, -0.15), 0.25, top, 1.0));
+  // Moving onto the segment from there, or moving out from farther than the resolution: a
+  // contact now, as for any ball pressed onto an edge.
+  EXPECT_EQ(segmentTimeOfImpact(onTop(5.1 + 4e-15, 0.15), 0.25, top, 1.0), std::optional<double>(0.0));
+  EXPECT_EQ(segmentTimeOfImpact(onTop(5.1 + 1e-12, -0.15), 0.25, top, 1.0), std::optional<double>(0.0));
+  EXPECT_TRUE(leavingOverEnd(top, 4e-15, -0.15, 0.0, positionResolution(Vec2<double>(5.1, 4.75))));
+  EXPECT_FALSE(leavingOverEnd(top, 1e-12, -0.15, 0.0, positionResolution(Vec2<double>(5.1, 4.75))));
+  EXPECT_TRUE(leavingOverEnd(top, top.length - 4e-15, 0.15, 0.0, positionResolution(Vec2<double>(6, 4.75))));
+}
+
 TEST(TimeOfImpact, BallAtRestOnAFloorThatGravityPressesIsInContactNow) {
   const SegmentFeature<double> floor = makeSegment(Vec2<double>(0, 20), Vec2<double>(20, 20));
   const auto tau = segmentTimeOfImpact(Trajectory<double>{{3, 19.75}, {0, 0}, {0, 25}}, 0.25, floor, 1.0);
@@ -162,6 +179,26 @@ TEST(TimeOfImpact, VertexHitAtFortyFiveDegrees) {
   const auto tau = circleTimeOfImpact(t, 0.25, corner, 10.0);
   ASSERT_TRUE(tau);
   EXPECT_NEAR(*tau, 3 - 0.25 / std::sqrt(2.0), 1e-14);
+}
+
+// docs/physics.md, grazes: passing a corner 1e-14 L inside the tangent is no collision (the
+// closing speed is about 3e-7 of the speed, rounding-level for a double root), 1e-6 L inside
+// it is (3e-3 of the speed); a ball falling onto the corner's top, curving into it, always is.
+TEST(TimeOfImpact, ARoundingLevelDipIntoACornerIsAGraze) {
+  const CircleFeature<double> corner{{12, 11}, 0};
+  auto passing = [](double depth) { return Trajectory<double>{{3, 10.75 + depth}, {47, 0}, {0, 0}}; };
+  EXPECT_FALSE(circleTimeOfImpact(passing(1e-14), 0.25, corner, 1.0));
+  const auto hit = circleTimeOfImpact(passing(1e-6), 0.25, corner, 1.0);
+  ASSERT_TRUE(hit);
+  EXPECT_NEAR(*hit, 9.0 / 47, 1e-4);
+  // On the corner's top, moving along the tangent, slower than gravity would let it fly off
+  // (|v|² < g·0.25): it curves into the corner, a contact now, not a graze.
+  const Trajectory<double> rolling{{12, 10.75}, {1, 0}, {0, 25}};
+  EXPECT_FALSE(grazesAt(rolling, corner.centre, 0.0));
+  const auto now = circleTimeOfImpact(rolling, 0.25, corner, 1.0);
+  ASSERT_TRUE(now);
+  EXPECT_EQ(*now, 0.0);
+  EXPECT_TRUE(grazesAt(passing(1e-14), corner.centre, 9.0 / 47));
 }
 
 TEST(TimeOfImpact, CircleUnderGravityMatchesAQuarticRootFoundIndependently) {

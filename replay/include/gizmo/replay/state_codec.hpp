@@ -14,7 +14,7 @@ void writeState(ByteWriter& out, const BoardState<Real>& s) {
   writeScalar(out, s.now, zero);
   out.varint(s.executedTotal);
   for (std::uint64_t n : s.executed) out.varint(n);
-  out.varint(s.eventsThisInstant);
+  out.varint(s.eventsInBurst);
   writeScalar(out, s.jamWindowStart, s.now);
   out.varint(s.collisionsInWindow);
   out.varint(s.nextInput);
@@ -64,7 +64,7 @@ BoardState<Real> readState(ByteReader& in) {
   s.now = readScalar<Real>(in, zero);
   s.executedTotal = in.varint();
   for (std::uint64_t& n : s.executed) n = in.varint();
-  s.eventsThisInstant = in.varint();
+  s.eventsInBurst = in.varint();
   s.jamWindowStart = readScalar<Real>(in, s.now);
   s.collisionsInWindow = in.varint();
   s.nextInput = in.varint();

@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "gizmo/core/geometry/time_of_impact.hpp"
 #include "gizmo/verify/certify_state.hpp"
 
 namespace gizmo::verify::detail {
@@ -59,6 +60,12 @@ I rangeOver(const Poly<I>& p, const Poly<I>& dp, const I& S) {
   return intersect(p.at(S), p.at(m) + dp.at(S) * (S - m));
 }
 
+// A ball's path in s: p(s) = p + v s + h s² (h = a / 2).
+template <class I>
+struct Motion {
+  Vec2<I> p, v, h;
+};
+
 // One (ball, feature) gap, or a leave / contact-end crossing, named as the queue would name it.
 template <class I>
 struct Gap {
@@ -67,12 +74,8 @@ struct Gap {
   bool bounded = false;  // edges: the contact parameter u(s) must lie in [0, length]
   Poly<I> u;
   I length;
-};
-
-// A ball's path in s: p(s) = p + v s + h s² (h = a / 2).
-template <class I>
-struct Motion {
-  Vec2<I> p, v, h;
+  // Round features and ball pairs: the path relative to the centre, for the graze rule.
+  std::optional<Motion<I>> round;
 };
 
 template <class I>
@@ -152,6 +155,7 @@ Gap<I> roundGap(const Vec2<I>& d, const Vec2<I>& v, const Vec2<I>& h, const I& r
   gap.g.c[3] = two * dot(v, h);
   gap.g.c[4] = dot(h, h);
   gap.g.settle();
+  gap.round = Motion<I>{d, v, h};
   return gap;
 }
 
@@ -163,6 +167,14 @@ template <class I>
 Tri closingAtStart(const Poly<I>& g) {
   if (certainlyPositive(g.c[0])) return Tri::No;
   const bool touching = certainlyNotAfter(g.c[0], I(0.0));
+  // Opening at a rounding-level speed but pressed back before the gap is ever positive:
+  // c1 > 0, c2 < 0 and 4|c2| c0 + c1² <= 0 (the second case of closingFromContact).
+  if (certainlyPositive(g.c[1]) && !certainlyNotAfter(I(0.0), g.c[2])) {
+    if (!certainlyNegative(g.c[2])) return Tri::Unknown;
+    const I top = I(4.0) * -g.c[2] * g.c[0] + square(g.c[1]);
+    if (certainlyPositive(top)) return Tri::No;
+    return touching && certainlyNotAfter(top, I(0.0)) ? Tri::Yes : Tri::Unknown;
+  }
   for (int i = 1; i <= 4; ++i) {
     if (isExactZero(g.c[i])) continue;
     if (certainlyPositive(g.c[i])) return Tri::No;
@@ -201,17 +213,17 @@ struct Piece {
   bool free = false;
 };
 
-// The leftmost-first subdivision of s ∈ [0, end], shared by the polynomial gaps and the swinging
+// The leftmost-first subdivision of s ∈ [from, end], shared by the polynomial gaps and the swinging
 // flipper's (certify_swing.hpp). A model gives examine(S) → Piece and at(s) → the gap at a point.
 // A piece with g(u) > 0 > g(v) and the contact certainly on the segment holds the first entry,
 // which bisection then narrows. `stack` is scratch space, passed in so that a search allocates
 // nothing once it has grown.
 template <class I, class Model>
-SearchResult<I> subdivide(const Model& model, const I& end, const SearchLimits& limits,
+SearchResult<I> subdivide(const Model& model, const I& from, const I& end, const SearchLimits& limits,
                           std::vector<std::pair<I, I>>& stack) {
   SearchResult<I> result;
   stack.clear();
-  stack.emplace_back(I(0.0), end);
+  stack.emplace_back(from, end);
   int budget = limits.pieces;
   while (!stack.empty()) {
     const I u = stack.back().first, v = stack.back().second;
@@ -287,6 +299,58 @@ std::optional<SearchResult<I>> decidedAtStart(Tri closing, Side sideAtStart, con
   return std::nullopt;
 }
 
+// The graze rule of the double run (grazesAt in geometry/time_of_impact.hpp) for a path e
+// relative to a round feature's centre, with its rate de and acceleration dde, all enclosed
+// over some times: Yes when the path grazes at each of them, No when at none.
+template <class I>
+Tri grazes(const Vec2<I>& e, const Vec2<I>& de, const Vec2<I>& dde) {
+  const I speed2 = dot(de, de);
+  const I curve = speed2 + dot(e, dde);  // half the gap's second derivative
+  if (certainlyNotAfter(curve, I(0.0))) return Tri::No;
+  const I closing = square(dot(e, de)), bound = I(grazeFractionSquared<double>()) * dot(e, e) * speed2;
+  if (certainlyBefore(bound, closing)) return Tri::No;
+  return certainlyPositive(curve) && certainlyNotAfter(closing, bound) ? Tri::Yes : Tri::Unknown;
+}
+
+// The same for a round gap's path d(s) = d + v s + h s² over the times S.
+template <class I>
+Tri grazesOver(const Motion<I>& path, const I& S) {
+  const I two(2.0);
+  return grazes(Vec2<I>(path.p + S * Vec2<I>(path.v + S * path.h)), Vec2<I>(path.v + (two * S) * path.h),
+                Vec2<I>(two * path.h));
+}
+
+// The search after the start, shared by the polynomial gaps and the swinging flipper's: the
+// first entry in [0, end], where an entry at which the path grazes a round feature passes, as
+// in the core, and the search goes on after it. `decided`: what the start alone settles
+// (decidedAtStart); grazesAt(S) → Tri for the times S.
+template <class I, class Model, class GrazesAt>
+SearchResult<I> searchPassingGrazes(const Model& model, const std::optional<SearchResult<I>>& decided, const I& end,
+                                    const SearchLimits& limits, std::vector<std::pair<I, I>>& stack,
+                                    GrazesAt&& grazesAt) {
+  auto verdict = [&](const SearchResult<I>& r) {
+    return r.found == Found::Entry ? grazesAt(hull(r.lo, r.hi)) : Tri::No;
+  };
+  const I zero(0.0);
+  if (decided) {
+    const Tri v = verdict(*decided);
+    if (v == Tri::No) return *decided;
+    if (v == Tri::Unknown) return SearchResult<I>{Found::Undecided, zero, end};
+  }
+  I from = zero;
+  // After a graze the gap must open and close again for another entry: more than a few
+  // grazes in one window is not worth telling apart.
+  for (int passed = 0; passed < 4; ++passed) {
+    const SearchResult<I> r = subdivide(model, from, end, limits, stack);
+    switch (verdict(r)) {
+      case Tri::No: return r;
+      case Tri::Unknown: return SearchResult<I>{Found::Undecided, r.lo, r.hi};
+      case Tri::Yes: from = r.hi; break;
+    }
+  }
+  return SearchResult<I>{Found::Undecided, from, end};
+}
+
 // The first entry of a gap in s ∈ [0, end]: an entry at s = 0 from contact, else the subdivision.
 template <class I>
 SearchResult<I> firstEntry(const Gap<I>& gap, const I& end, const SearchLimits& limits,
@@ -294,17 +358,17 @@ SearchResult<I> firstEntry(const Gap<I>& gap, const I& end, const SearchLimits& 
   SearchResult<I> result;
   if (gap.g.degree == 0) return result;  // constant: never crosses
   const I zero(0.0);
-  const Tri closing = closingAtStart(gap.g);
-  const Side sideAtStart = contactSide(gap, zero);
-  if (const std::optional<SearchResult<I>> decided = decidedAtStart(closing, sideAtStart, end)) return *decided;
+  const std::optional<SearchResult<I>> decided =
+      decidedAtStart(closingAtStart(gap.g), contactSide(gap, zero), end);
   // A quadratic that opens upwards with no two real roots is never negative, so it has no entry
   // anywhere: that settles exact tangencies (a straight pass at exactly the touching distance,
   // where the discriminant is exactly 0), which no subdivision can.
-  if (gap.g.degree == 2 && certainlyPositive(gap.g.c[2]) &&
+  if (!decided && gap.g.degree == 2 && certainlyPositive(gap.g.c[2]) &&
       certainlyNotAfter(I(square(gap.g.c[1]) - I(4.0) * gap.g.c[0] * gap.g.c[2]), zero))
     return result;
   const Poly<I> dg = gap.g.derivative();
-  return subdivide(PolyModel<I>{gap, dg}, end, limits, stack);
+  return searchPassingGrazes(PolyModel<I>{gap, dg}, decided, end, limits, stack,
+                             [&](const I& S) { return gap.round ? grazesOver(*gap.round, S) : Tri::No; });
 }
 
 // Leave an absorber: the centre crosses one side of the rectangle grown by r outwards

@@ -78,36 +78,68 @@ struct SwingValues {
 };
 
 // The gap over S (a piece, or a point), by plain interval evaluation; the slope only on request.
+// The axis's direction u at the times S.
 template <class I>
-SwingValues<I> swingValues(const SwingGap<I>& gap, const I& S, bool withSlope) {
-  const SwingAxis<I>& axis = *gap.axis;
+Vec2<I> axisDirection(const SwingAxis<I>& axis, const I& S) {
   I sine, cosine;
   sinCos(I(axis.phase + axis.omega * S), sine, cosine);
   Vec2<I> u(cosine, sine);
   for (int i = 0; i < ((axis.quarter % 4) + 4) % 4; ++i) u = Vec2<I>(-u.y, u.x);
-  const Vec2<I> q(gap.q0.x + S * (gap.v.x + S * gap.h.x), gap.q0.y + S * (gap.v.y + S * gap.h.y));
-  SwingValues<I> out;
+  return u;
+}
+
+// The ball's centre less the pivot, q(S), and its rate q'(S).
+template <class I>
+Vec2<I> offsetAt(const SwingGap<I>& gap, const I& S) {
+  return Vec2<I>(gap.q0.x + S * (gap.v.x + S * gap.h.x), gap.q0.y + S * (gap.v.y + S * gap.h.y));
+}
+template <class I>
+Vec2<I> offsetRate(const SwingGap<I>& gap, const I& S) {
   const I two(2.0);
+  return Vec2<I>(gap.v.x + two * S * gap.h.x, gap.v.y + two * S * gap.h.y);
+}
+
+// The path relative to the tip's centre and its rate: e = q − L u, e' = q' − Lω u⊥.
+template <class I>
+Vec2<I> tipOffset(const SwingAxis<I>& axis, const Vec2<I>& q, const Vec2<I>& u) {
+  return Vec2<I>(q.x - axis.length * u.x, q.y - axis.length * u.y);
+}
+template <class I>
+Vec2<I> tipOffsetRate(const SwingAxis<I>& axis, const Vec2<I>& dq, const Vec2<I>& u) {
+  const I turn = axis.length * axis.omega;
+  return Vec2<I>(dq.x + turn * u.y, dq.y - turn * u.x);
+}
+
+template <class I>
+SwingValues<I> swingValues(const SwingGap<I>& gap, const I& S, bool withSlope) {
+  const SwingAxis<I>& axis = *gap.axis;
+  const Vec2<I> u = axisDirection(axis, S);
+  const Vec2<I> q = offsetAt(gap, S);
+  SwingValues<I> out;
   if (gap.side()) {
     const I sigma(gap.feature == 0 ? 1.0 : -1.0);
     const Vec2<I> n(sigma * u.y, -(sigma * u.x));
     out.across = dot(q, n);
     out.along = dot(q, u);
     out.g = out.across - gap.reach;
-    if (withSlope) {
-      const Vec2<I> dq(gap.v.x + two * S * gap.h.x, gap.v.y + two * S * gap.h.y);
-      out.dg = dot(dq, n) + sigma * axis.omega * out.along;
-    }
+    if (withSlope) out.dg = dot(offsetRate(gap, S), n) + sigma * axis.omega * out.along;
   } else {
-    const Vec2<I> e(q.x - axis.length * u.x, q.y - axis.length * u.y);
+    const Vec2<I> e = tipOffset(axis, q, u);
     out.g = dot(e, e) - square(gap.reach);
-    if (withSlope) {
-      const I turn = axis.length * axis.omega;
-      const Vec2<I> de(gap.v.x + two * S * gap.h.x + turn * u.y, gap.v.y + two * S * gap.h.y - turn * u.x);
-      out.dg = two * dot(e, de);
-    }
+    if (withSlope) out.dg = I(2.0) * dot(e, tipOffsetRate(axis, offsetRate(gap, S), u));
   }
   return out;
+}
+
+// The graze rule at the round tip over the times S, on the path relative to the tip's centre
+// (the core's tip search), whose acceleration is q'' + Lω² u.
+template <class I>
+Tri tipGrazes(const SwingGap<I>& gap, const I& S) {
+  const SwingAxis<I>& axis = *gap.axis;
+  const Vec2<I> u = axisDirection(axis, S);
+  const I two(2.0), spin = axis.length * axis.omega * axis.omega;
+  const Vec2<I> dde(two * gap.h.x + spin * u.x, two * gap.h.y + spin * u.y);
+  return grazes(tipOffset(axis, offsetAt(gap, S), u), tipOffsetRate(axis, offsetRate(gap, S), u), dde);
 }
 
 // The kernel's search interface (subdivide in certify_kernel.hpp) for a moving feature.
@@ -155,8 +187,8 @@ SearchResult<I> firstSwingEntry(const SwingGap<I>& gap, const I& end, const Sear
     const bool off = certainlyNegative(start.along) || certainlyBefore(gap.axis->length, start.along);
     sideAtStart = on ? Side::Inside : off ? Side::Outside : Side::Unknown;
   }
-  if (const std::optional<SearchResult<I>> decided = decidedAtStart(closing, sideAtStart, end)) return *decided;
-  return subdivide(SwingModel<I>{gap}, end, limits, stack);
+  return searchPassingGrazes(SwingModel<I>{gap}, decidedAtStart(closing, sideAtStart, end), end, limits, stack,
+                             [&](const I& S) { return gap.side() ? Tri::No : tipGrazes(gap, S); });
 }
 
 }  // namespace gizmo::verify::detail

@@ -28,7 +28,7 @@ struct BoardState {
   Real now{0};
   std::uint64_t executedTotal = 0;
   std::array<std::uint64_t, kEventKindCount> executed{};
-  std::uint64_t eventsThisInstant = 0;
+  std::uint64_t eventsInBurst = 0;
   Real jamWindowStart{0};
   std::uint64_t collisionsInWindow = 0;
   std::uint64_t nextInput = 0;

@@ -38,7 +38,8 @@ struct CollisionPair {
   GizmoId collidee;
 };
 
-// Stopped instead of looping for ever: too many events at one instant of board time.
+// Stopped instead of looping for ever: too many events with (next to) no board time between
+// them.
 class StallError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -138,6 +139,8 @@ class GameBoard final : private BoardAccess<Real> {
   void scheduleBallEvents(Ball<Real>& ball);
   void computePair(GizmoId ball, GizmoId other);
   void gatherCandidates(GizmoId ball, std::vector<GizmoId>& out);
+  Real ballHorizon(Ball<Real>& b) const;
+  bool frictionTicks() const;
   struct CellRange {
     int x0, x1, y0, y1;  // inclusive; empty when x1 < x0
   };
@@ -174,13 +177,14 @@ class GameBoard final : private BoardAccess<Real> {
 
   EventQueue<Real> queue_;
   std::vector<GizmoId> recompute_;
+  std::vector<GizmoId> recomputing_;  // recomputePending's working list, kept for its capacity
   std::vector<GizmoId> candidates_;
   std::array<std::uint64_t, kEventKindCount> executed_{};
   std::uint64_t executedTotal_ = 0;
   RunLimit limit_;
   bool limited_ = false;
   bool stopped_ = false;
-  std::uint64_t eventsThisInstant_ = 0;
+  std::uint64_t eventsInBurst_ = 0;
   // The jam rule: more than kJamThreshold collisions within kJamWindow seconds of board time
   // (counted from the first of them) leave no rebound.
   Real jamWindowStart_{0};

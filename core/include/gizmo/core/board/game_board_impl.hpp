@@ -12,11 +12,22 @@
 namespace gizmo {
 
 namespace detail {
-// Events at one instant beyond which the board declares a stall rather than loop for ever.
-inline constexpr std::uint64_t kMaxEventsPerInstant = 1000000;
+// Events in one burst beyond which the board declares a stall rather than loop for ever. A
+// burst is a run of events each at most kBurstGap after the one before: a chain of events at
+// one instant, or a Zeno chain whose steps rounding has shrunk to nothing. No board makes a
+// million of them legitimately (the jam rule settles a wedge within 64 hits per 10⁻⁶ s).
+inline constexpr std::uint64_t kMaxEventsInBurst = 1000000;
+inline constexpr double kBurstGap = 1e-9;
 // Widening of a ball's swept box, in L: far above rounding, far below any gap that matters.
 inline constexpr double kBroadPhaseMargin = 1e-6;
-inline int cellOf(double v) { return std::clamp(static_cast<int>(std::floor(v)), 0, kBoardSize - 1); }
+// The grid cell holding coordinate v, clamped to the board. Compared before converting, so
+// that truncation is the floor (v >= 0), and no value (huge, NaN) converts out of range:
+// std::floor costs a library call on a target without SSE4.1, and this runs for every box.
+inline int cellOf(double v) {
+  if (!(v >= 0)) return 0;
+  if (v >= double(kBoardSize - 1)) return kBoardSize - 1;
+  return static_cast<int>(v);
+}
 }  // namespace detail
 
 template <class Real>
@@ -209,12 +220,12 @@ void GameBoard<Real>::tickUntil(const Real& end) {
 // closed forms anchored at their last change, so only the classic model steps anything.
 template <class Real>
 void GameBoard<Real>::advanceTo(const Real& t) {
-  if (t == now_) {
-    if (++eventsThisInstant_ > detail::kMaxEventsPerInstant)
-      throw StallError("more than " + std::to_string(detail::kMaxEventsPerInstant) +
-                       " events at board time " + std::to_string(toDouble(t)));
+  if (!(fromDouble<Real>(detail::kBurstGap) < Real(t - now_))) {
+    if (++eventsInBurst_ > detail::kMaxEventsInBurst)
+      throw StallError("more than " + std::to_string(detail::kMaxEventsInBurst) +
+                       " events, each within 1e-9 s of the one before, by board time " + std::to_string(toDouble(t)));
   } else {
-    eventsThisInstant_ = 0;
+    eventsInBurst_ = 0;
   }
   if (params_.model == MotionModel::Classic && now_ < t) {
     const Real dt = t - now_;
@@ -346,7 +357,9 @@ void GameBoard<Real>::releaseContactsOn(GizmoId g) {
 template <class Real>
 void GameBoard<Real>::recomputePending() {
   if (recompute_.empty()) return;
-  std::vector<GizmoId> todo;
+  // Swapped, not moved: both buffers keep their capacity, so a recompute allocates nothing.
+  std::vector<GizmoId>& todo = recomputing_;
+  todo.clear();
   todo.swap(recompute_);
   std::sort(todo.begin(), todo.end());
   todo.erase(std::unique(todo.begin(), todo.end()), todo.end());
@@ -366,8 +379,8 @@ void GameBoard<Real>::recomputePending() {
         validUntil_[i] = infinity();
         boxes_[i] = b->bounds();
       } else {
-        validUntil_[i] = now_ + params_.maxTick;
-        boxes_[i] = sweptBox(b->trajectoryAt(now_), params_.maxTick, Ball<Real>::radius(),
+        validUntil_[i] = ballHorizon(*b);
+        boxes_[i] = sweptBox(b->trajectoryAt(now_), Real(validUntil_[i] - now_), Ball<Real>::radius(),
                              fromDouble<Real>(detail::kBroadPhaseMargin));
       }
       placeBall(g, !b->captured());
@@ -409,6 +422,21 @@ void GameBoard<Real>::recomputePending() {
   }
 }
 
+// How far ahead a moving ball's pairs are predicted: the maximum tick length, or its next
+// friction tick when that comes first, since the tick changes its velocity and every prediction
+// past it would be removed unrun (on a board with friction most events are friction ticks).
+template <class Real>
+Real GameBoard<Real>::ballHorizon(Ball<Real>& b) const {
+  const Real horizon = now_ + params_.maxTick;
+  if (!frictionTicks()) return horizon;
+  return minOf(horizon, frictionTickTime(b));
+}
+
+template <class Real>
+bool GameBoard<Real>::frictionTicks() const {
+  return params_.model == MotionModel::Ballistic && (params_.mu != Real(0) || params_.mu2 != Real(0));
+}
+
 // The ball's own events: friction ticks, the end of a sliding contact, and the seed's
 // recalculate-collision-time event at the prediction horizon.
 template <class Real>
@@ -419,7 +447,7 @@ void GameBoard<Real>::scheduleBallEvents(Ball<Real>& b) {
   // Each of these events recomputes the ball; when one comes by the horizon, a recalculate
   // event would always be removed before it runs, and is not scheduled.
   bool recomputedInTime = false;
-  if (params_.model == MotionModel::Ballistic && (params_.mu != Real(0) || params_.mu2 != Real(0))) {
+  if (frictionTicks()) {
     const Real t = frictionTickTime(b);
     schedule(EventKind::FrictionTick, t, id, kNoGizmo, -1);
     recomputedInTime = !(horizon < t);
@@ -442,8 +470,8 @@ Real GameBoard<Real>::frictionTickTime(Ball<Real>& b) const {
   return Real(k) * h;
 }
 
-// Broad phase: fixed gizmos in the grid cells the ball's swept box covers, the walls, and the
-// balls whose boxes overlap it. Ordered by id so that scheduling order is deterministic.
+// Broad phase: fixed gizmos in the grid cells the ball's swept box covers whose bounds overlap
+// it, the walls, and the balls whose boxes overlap it. Ordered by id so that scheduling order is deterministic.
 template <class Real>
 void GameBoard<Real>::gatherCandidates(GizmoId ballId, std::vector<GizmoId>& out) {
   out.clear();
@@ -453,7 +481,8 @@ void GameBoard<Real>::gatherCandidates(GizmoId ballId, std::vector<GizmoId>& out
   for (int y = c.y0; y <= c.y1; ++y)
     for (int x = c.x0; x <= c.x1; ++x) {
       const std::size_t cell = std::size_t(y * kBoardSize + x);
-      out.insert(out.end(), grid_[cell].begin(), grid_[cell].end());
+      for (GizmoId g : grid_[cell])
+        if (boxes_[static_cast<std::size_t>(g)].overlaps(box)) out.push_back(g);
       for (GizmoId other : ballGrid_[cell])
         if (other != ballId && boxes_[static_cast<std::size_t>(other)].overlaps(box)) out.push_back(other);
     }

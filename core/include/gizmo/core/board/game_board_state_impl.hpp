@@ -12,7 +12,7 @@ BoardState<Real> GameBoard<Real>::saveState() const {
   s.now = now_;
   s.executedTotal = executedTotal_;
   s.executed = executed_;
-  s.eventsThisInstant = eventsThisInstant_;
+  s.eventsInBurst = eventsInBurst_;
   s.jamWindowStart = jamWindowStart_;
   s.collisionsInWindow = collisionsInWindow_;
   s.nextInput = nextInput_;
@@ -107,7 +107,7 @@ void GameBoard<Real>::restoreState(const BoardState<Real>& s) {
   now_ = s.now;
   executed_ = s.executed;
   executedTotal_ = s.executedTotal;
-  eventsThisInstant_ = s.eventsThisInstant;
+  eventsInBurst_ = s.eventsInBurst;
   jamWindowStart_ = s.jamWindowStart;
   collisionsInWindow_ = s.collisionsInWindow;
   nextInput_ = static_cast<std::size_t>(s.nextInput);

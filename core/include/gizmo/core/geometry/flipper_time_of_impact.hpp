@@ -5,6 +5,7 @@
 // gap's first and second derivatives over any interval; those are derived below.
 #include <optional>
 
+#include "gizmo/core/geometry/time_of_impact.hpp"
 #include "gizmo/core/geometry/trajectory.hpp"
 #include "gizmo/core/math/roots.hpp"
 #include "gizmo/core/math/trig.hpp"
@@ -113,6 +114,63 @@ struct TipGap {
   }
 };
 
+// The swinging capsule's surface where a ball (path anchored at the present, radius r) meets
+// feature 0 or 1 (a long side) or 3 (the tip), at the present:
+// - normal: from the surface toward the ball's centre;
+// - surfaceVelocity: the velocity of the surface point under the ball (ω × its offset);
+// - gap: the distance between the two surfaces (negative: overlapping);
+// - bend: what the capsule's own motion adds to the gap's second derivative, besides the
+//   ball's acceleration along the normal. A ball touching a capsule that turns into it with no
+//   closing speed (at the pivot the surface does not move) is pressed by this alone.
+// A side's gap is h = σ q·n − reach with n turning at ω, so h'' = σ(q''·n + 2ω q'·u − ω² q·n).
+// The tip's is d = |e| − reach with e = q − L u, so d'' = e''·ê + (|e'|² − (e'·ê)²)/|e|,
+// where e' = q' − Lω u⊥ and e'' = q'' + Lω² u.
+template <class Real>
+struct SwingTouch {
+  Vec2<Real> normal, surfaceVelocity;
+  Real gap{0}, bend{0};
+  bool alongAxis = true;  // a side's contact point lies on the side, the centre on its side
+};
+
+// The velocity of the capsule's surface point under a ball centred at p (radius r, normal n
+// from the surface to the centre): ω × its offset from the pivot.
+template <class Real>
+Vec2<Real> swingSurfaceVelocity(const SwingingAxis<Real>& axis, const Vec2<Real>& p, const Real& r, const Vec2<Real>& n) {
+  const Vec2<Real> offset = p - r * n - axis.pivot;
+  return axis.omega * Vec2<Real>(-offset.y, offset.x);
+}
+
+template <class Real>
+std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, const Real& r, const SwingingAxis<Real>& axis,
+                                             int feature) {
+  const Vec2<Real> u = axis.direction(Real(0));
+  const Vec2<Real> q = ball.p - axis.pivot;
+  const Real reach = r + axis.radius;
+  SwingTouch<Real> touch;
+  if (feature == 0 || feature == 1) {
+    touch.normal = feature == 0 ? Vec2<Real>(u.y, -u.x) : Vec2<Real>(-u.y, u.x);
+    const Real across = dot(q, touch.normal);
+    const Real along = dot(q, u);
+    touch.gap = across - reach;
+    touch.bend = Real(2) * axis.omega * dot(ball.v, u) - axis.omega * axis.omega * across;
+    touch.alongAxis = Real(0) <= along && along <= axis.length && Real(0) <= across;
+  } else if (feature == 3) {
+    const Vec2<Real> e = ball.p - (axis.pivot + axis.length * u);
+    const Real distance = length(e);
+    if (distance == Real(0)) return std::nullopt;
+    touch.normal = Vec2<Real>(e.x / distance, e.y / distance);
+    touch.gap = distance - reach;
+    const Vec2<Real> de = ball.v - (axis.length * axis.omega) * Vec2<Real>(-u.y, u.x);
+    const Real radial = dot(de, touch.normal);
+    touch.bend = axis.length * axis.omega * axis.omega * dot(u, touch.normal) +
+                 (lengthSquared(de) - radial * radial) / distance;
+  } else {
+    return std::nullopt;
+  }
+  touch.surfaceVelocity = swingSurfaceVelocity(axis, ball.p, r, touch.normal);
+  return touch;
+}
+
 // First contact of a ball (radius r) with a swinging capsule over τ ∈ [0, limit], and which
 // feature: 0 and 1 the long sides, 3 the tip (the pivot circle, 2, does not move: the caller
 // treats it as a static circle).
@@ -153,7 +211,16 @@ std::optional<SwingContact<Real>> swingingCapsuleTimeOfImpact(const Trajectory<R
   {
     const TipGap<Real> gap{ball, axis, reach};
     const Real searchEnd = best ? best->tau : limit;
-    consider(math::firstEntrySmooth(gap, Real(0), searchEnd, [](const Real&) { return true; }), 3);
+    // The tip is round: a graze passes it (time_of_impact.hpp, grazesAt), judged on the path
+    // relative to the tip's centre, e(τ), which curves away when |e'|² + e·e'' > 0.
+    auto notAGraze = [&](const Real& tau) {
+      Vec2<Real> u;
+      const Vec2<Real> e = gap.offset(tau, u);
+      const Vec2<Real> de = ball.velocityAt(tau) - (axis.length * axis.omega) * Vec2<Real>(-u.y, u.x);
+      const Vec2<Real> dde = ball.a + (axis.length * axis.omega * axis.omega) * u;
+      return !grazing(e, de, dde);
+    };
+    consider(math::firstEntrySmooth(gap, Real(0), searchEnd, notAGraze), 3);
   }
   return best;
 }

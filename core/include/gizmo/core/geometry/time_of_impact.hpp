@@ -16,9 +16,14 @@ namespace gizmo {
 // The gap polynomial g(τ) = c0 + c1 τ + c2 τ² + … is already touching at τ = 0 and about to
 // close: the first non-zero derivative at 0 is negative. firstEntry handles g'(0) < 0; this
 // also catches a ball at rest on a surface that gravity presses into it (g'(0) = 0, g'' < 0).
+// And a touching ball that opens at a rounding-level speed but is pressed back before the gap
+// ever becomes positive (c2 < 0 and c0 + c1²/(4|c2|) <= 0): no entry from a positive gap would
+// ever be found for it, and it would sink through the surface (a ball sliding off a flipper's
+// side onto the round end, found by the no-tunnelling property).
 template <class Real>
 bool closingFromContact(const std::array<Real, 5>& c) {
   if (Real(0) < c[0]) return false;
+  if (Real(0) < c[1] && c[2] < Real(0) && Real(Real(4) * -c[2] * c[0] + c[1] * c[1]) <= Real(0)) return true;
   for (int i = 1; i < 5; ++i) {
     if (c[i] < Real(0)) return true;
     if (Real(0) < c[i]) return false;
@@ -30,6 +35,27 @@ template <class Real, class Accept>
 std::optional<Real> firstPolynomialEntry(const std::array<Real, 5>& c, const Real& limit, Accept&& accept) {
   if (closingFromContact(c) && accept(Real(0))) return Real(0);
   return math::firstEntry(c, Real(0), limit, accept);
+}
+
+// How far apart representable positions near p are, give or take a few roundings: a ball's
+// centre cannot move by less. Zero for an exact scalar.
+template <class Real>
+Real positionResolution(const Vec2<Real>& p) {
+  return Real(4) * epsilonOf<Real>() * Real(absOf(p.x) + absOf(p.y));
+}
+
+// Whether a ball at u along segment s (du, ddu: its speed and acceleration along it) is leaving
+// it over an end now: at the end, or closer to it than the position resolution, and moving out.
+// Closer than the resolution counts as there because the ball can never get there by moving:
+// every step towards the end rounds back to where it was, and a sliding contact would end and
+// begin again at the same place for ever (found by the fuzzer on a ball sliding off a flipper).
+template <class Real>
+bool leavingOverEnd(const SegmentFeature<Real>& s, const Real& u, const Real& du, const Real& ddu,
+                    const Real& resolution) {
+  auto movingOut = [](const Real& rate, const Real& accel) {
+    return rate < Real(0) || (rate == Real(0) && accel < Real(0));
+  };
+  return (u <= resolution && movingOut(du, ddu)) || (Real(s.length - u) <= resolution && movingOut(-du, -ddu));
 }
 
 // Ball (centre path t, radius r) against a segment, from its free side only; the contact point
@@ -49,18 +75,43 @@ std::optional<Real> segmentTimeOfImpact(const Trajectory<Real>& t, const Real& r
   // The contact point must lie on the segment; at either end it must also be moving onto it
   // (a ball leaving over an end meets that end's vertex instead, not the edge again).
   auto onSegment = [&](const Real& tau) {
-    const Real u = dot(t.positionAt(tau) - s.a, s.direction);
+    const Vec2<Real> p = t.positionAt(tau);
+    const Real u = dot(p - s.a, s.direction);
     if (u < Real(0) || s.length < u) return false;
-    const Real du = dot(t.velocityAt(tau), s.direction), ddu = dot(t.a, s.direction);
-    if (u == Real(0) && (du < Real(0) || (du == Real(0) && ddu < Real(0)))) return false;
-    if (u == s.length && (Real(0) < du || (du == Real(0) && Real(0) < ddu))) return false;
-    return true;
+    return !leavingOverEnd(s, u, dot(t.velocityAt(tau), s.direction), dot(t.a, s.direction), positionResolution(p));
   };
   return firstPolynomialEntry(c, limit, onSegment);
 }
 
+// A graze (physics.md, "Grazes"): a path that touches a round feature with a closing speed of
+// at most κ times its speed, while curving away from it (|v|² + d·a > 0: the gap's second
+// derivative is positive), passes it. The dip of the gap below zero is then at most
+// (r + R) κ² / 2, and at an exact tangency whether it dips at all is decided by rounding:
+// without the rule two runs that differ by an ulp (the two motion models) would part there.
+// κ² = min(2^20 ε, 2^-20): a thousand times above the rounding of a near-double root
+// (√ε relative), and 0 for an exact scalar, where only a true tangency is a graze.
+template <class Real>
+Real grazeFractionSquared() {
+  const Real scale = Real(1048576);
+  return minOf(Real(scale * epsilonOf<Real>()), Real(Real(1) / scale));
+}
+
+// The rule on a path e relative to the feature's centre, with its rate de and acceleration dde.
+template <class Real>
+bool grazing(const Vec2<Real>& e, const Vec2<Real>& de, const Vec2<Real>& dde) {
+  const Real speed2 = lengthSquared(de);
+  if (!(Real(0) < Real(speed2 + dot(e, dde)))) return false;  // curving into it: a contact
+  const Real closing = dot(e, de);
+  return closing * closing <= grazeFractionSquared<Real>() * lengthSquared(e) * speed2;
+}
+
+template <class Real>
+bool grazesAt(const Trajectory<Real>& t, const Vec2<Real>& centre, const Real& tau) {
+  return grazing(Vec2<Real>(t.positionAt(tau) - centre), t.velocityAt(tau), t.a);
+}
+
 // Ball against a circle of radius R around centre (R = 0: a polygon's vertex), or two balls
-// with the relative path: the gap is |d(τ)|² − (r + R)², a quartic when a ≠ 0.
+// with the relative path: the gap is |d(τ)|² − (r + R)², a quartic when a ≠ 0. Grazes pass.
 // afterNow: a contact at τ = 0 does not count (a graze already let through at this instant).
 template <class Real>
 std::optional<Real> circleTimeOfImpact(const Trajectory<Real>& t, const Real& r, const CircleFeature<Real>& circle,
@@ -86,7 +137,9 @@ std::optional<Real> circleTimeOfImpact(const Trajectory<Real>& t, const Real& r,
   const Real quarter = Real(1) / Real(4);
   const std::array<Real, 5> c{dist2 - reach * reach, Real(2) * dot(d, t.v), lengthSquared(t.v) + dot(d, t.a),
                               dot(t.v, t.a), quarter * lengthSquared(t.a)};
-  return firstPolynomialEntry(c, limit, [&](const Real& tau) { return !afterNow || Real(0) < tau; });
+  return firstPolynomialEntry(c, limit, [&](const Real& tau) {
+    return (!afterNow || Real(0) < tau) && !grazesAt(t, circle.centre, tau);
+  });
 }
 
 template <class Real>

@@ -170,8 +170,10 @@ class Ball final : public AbstractGizmo<Real> {
 
   // Reflects off a surface with normal n (towards the ball), coefficient c and surface velocity
   // u, applying the slow-contact rules. Returns false when the ball was not approaching.
+  // surfaceBend: how the surface's own motion bends the gap (a swinging flipper turning into
+  // the ball presses it even without gravity); 0 for surfaces that do not move.
   bool reflect(const Vec2<Real>& n, const Real& c, const Vec2<Real>& u, SurfaceType type,
-               const SurfaceContact<Real>* surface, BoardAccess<Real>& board) {
+               const SurfaceContact<Real>* surface, BoardAccess<Real>& board, const Real& surfaceBend = Real(0)) {
     const Real& now = board.now();
     const PhysicsParams<Real>& params = board.params();
     const Vec2<Real> p = positionAt(now);
@@ -180,10 +182,10 @@ class Ball final : public AbstractGizmo<Real> {
     // Touching and barely opening (under restSpeed) while accelerating into the surface counts
     // as a slow hit: that is how a ball at rest on a floor comes to lie on it, and how a
     // prediction a rounding error ahead of the present (a time that rounds to now) lands.
-    if (!(closing < Real(0)) && !(closing < params.restSpeed && dot(a_, n) < Real(0))) return false;
+    if (!(closing < Real(0)) && !(closing < params.restSpeed && Real(dot(a_, n) + surfaceBend) < Real(0))) return false;
     // Pressed by what actually accelerates the ball: gravity, less what a surface it slides on
     // takes (sliding down an incline presses it into whatever stands at the bottom).
-    const bool pressed = dot(effectiveGravity(params), n) < Real(0);
+    const bool pressed = Real(dot(effectiveGravity(params), n) + surfaceBend) < Real(0);
     const bool jammed = board.jammed();
     if (pressed && -closing < params.restSpeed) {
       if (type == SurfaceType::StaticSegment && surface) {
@@ -195,6 +197,12 @@ class Ball final : public AbstractGizmo<Real> {
         contact_ = *surface;
         board.reportRule(ModelRule::ContactBegin, this->id(), surface->gizmo);
         setState(now, p, v - dot(v, n) * n, params);
+        return true;
+      }
+      if (surfaceBend == Real(0) && u == Vec2<Real>() && balancedOn(n, v, params)) {
+        // Exactly on top of something round and still, with nothing to roll it off: it rests
+        // there, where the minimum bounce would rattle for ever (~1250 hits a second).
+        comeToRest(board, kNoGizmo);
         return true;
       }
       if (jammed) {
@@ -237,6 +245,13 @@ class Ball final : public AbstractGizmo<Real> {
     setState(now, p, v, params);
   }
 
+  // Balanced on a round surface: gravity and the velocity both lie exactly along the normal,
+  // so the contact point is the top of the surface and nothing moves the ball along it.
+  bool balancedOn(const Vec2<Real>& n, const Vec2<Real>& v, const PhysicsParams<Real>& params) const {
+    const Vec2<Real> g = effectiveGravity(params);
+    return Vec2<Real>(g - dot(g, n) * n) == Vec2<Real>() && Vec2<Real>(v - dot(v, n) * n) == Vec2<Real>();
+  }
+
   // Wedged: at rest, without gravity, until something hits it.
   void comeToRest(BoardAccess<Real>& board, GizmoId against) {
     wedged_ = true;
@@ -258,6 +273,7 @@ class Ball final : public AbstractGizmo<Real> {
     const SegmentFeature<Real>& s = contact_->segment;
     const Real half = Real(1) / Real(2);
     const Real u0 = dot(t.p - s.a, s.direction), du = dot(t.v, s.direction), ddu = half * dot(t.a, s.direction);
+    if (leavingOverEnd(s, u0, du, ddu, positionResolution(t.p))) return now;
     // Leaving past a (u falls through 0) or past b (u rises through length): both are entries
     // of a quadratic gap, which the root finder handles.
     const std::array<Real, 5> pastA{u0, du, ddu, Real(0), Real(0)};

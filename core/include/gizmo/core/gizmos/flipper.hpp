@@ -82,7 +82,7 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
   // --- collisions ----------------------------------------------------------------------------
   // Features: 0 and 1 the long sides, 2 the pivot end, 3 the tip end.
   std::optional<Contact<Real>> timeUntilCollision(const AbstractGizmo<Real>& other, const Real& now, const Real& limit,
-                                                  const PhysicsParams<Real>&) const override {
+                                                  const PhysicsParams<Real>& params) const override {
     const Ball<Real>* ball = other.asBall();
     if (!ball || ball->captured()) return std::nullopt;
     const Trajectory<Real> t = ball->trajectoryAt(now);
@@ -94,6 +94,18 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
       if (!hit) return std::nullopt;
       return Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
     }
+    // A ball touching the moving capsule, not opening faster than restSpeed / 2, and pressed into
+    // it (by its own acceleration or by the capsule turning into it) is hit now: the gap search
+    // below only finds gaps that go from positive to zero, and this gap starts at zero. (Half of
+    // restSpeed: the minimum bounce sends a ball off at restSpeed, which must not count again.)
+    const SwingingAxis<Real> axis = axisAt(now);
+    for (const int feature : {0, 1, 3}) {
+      const std::optional<SwingTouch<Real>> touch = swingTouchNow(t, r, axis, feature);
+      if (touch && touch->alongAxis && !(Real(0) < touch->gap) &&
+          dot(Vec2<Real>(t.v - touch->surfaceVelocity), touch->normal) < params.restSpeed / Real(2) &&
+          Real(dot(t.a, touch->normal) + touch->bend) < Real(0))
+        return Contact<Real>{now, feature, EventKind::Collision};
+    }
     const Real horizon = minOf(Real(limit - now), Real(stopTime() - now));
     std::optional<Contact<Real>> best;
     // The pivot end does not move while the flipper turns.
@@ -101,7 +113,7 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     if (const std::optional<Real> tau = circleTimeOfImpact(t, r, pivotEnd, horizon))
       best = Contact<Real>{now + *tau, 2, EventKind::Collision};
     const Real searchEnd = best ? Real(best->time - now) : horizon;
-    if (const auto hit = swingingCapsuleTimeOfImpact(t, r, axisAt(now), searchEnd))
+    if (const auto hit = swingingCapsuleTimeOfImpact(t, r, axis, searchEnd))
       if (!best || now + hit->tau < best->time) best = Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
     return best;
   }
@@ -114,25 +126,21 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
       return;
     }
     const Real& now = board.now();
-    const Vec2<Real> p = ball->positionAt(now);
     const SwingingAxis<Real> axis = axisAt(now);
-    const Vec2<Real> u = axis.direction(Real(0));
-    Vec2<Real> n;
-    switch (contact.feature) {
-      case 0: n = Vec2<Real>(u.y, -u.x); break;
-      case 1: n = Vec2<Real>(-u.y, u.x); break;
-      default: {
-        const Vec2<Real> centre = contact.feature == 2 ? pivot_ : pivot_ + axis.length * u;
-        const Vec2<Real> d = p - centre;
-        const Real dist = length(d);
-        if (dist == Real(0)) return;
-        n = Vec2<Real>(d.x / dist, d.y / dist);
-      }
+    if (contact.feature == 2) {
+      // The pivot end turns in place: its surface moves along itself only.
+      const Vec2<Real> d = ball->positionAt(now) - pivot_;
+      const Real dist = length(d);
+      if (dist == Real(0)) return;
+      const Vec2<Real> n(d.x / dist, d.y / dist);
+      const Vec2<Real> surfaceVelocity = swingSurfaceVelocity(axis, ball->positionAt(now), Ball<Real>::radius(), n);
+      ball->reflect(n, coefficient(), surfaceVelocity, SurfaceType::Round, nullptr, board);
+    } else {
+      const std::optional<SwingTouch<Real>> touch =
+          swingTouchNow(ball->trajectoryAt(now), Ball<Real>::radius(), axis, contact.feature);
+      if (!touch) return;
+      ball->reflect(touch->normal, coefficient(), touch->surfaceVelocity, SurfaceType::Round, nullptr, board, touch->bend);
     }
-    // The surface point under the ball moves at ω × r about the pivot.
-    const Vec2<Real> touch = p - Ball<Real>::radius() * n - pivot_;
-    const Vec2<Real> surfaceVelocity = axis.omega * Vec2<Real>(-touch.y, touch.x);
-    ball->reflect(n, coefficient(), surfaceVelocity, SurfaceType::Round, nullptr, board);
     countHit(ball->id(), board);
   }
 

@@ -113,7 +113,11 @@ inline long solverIterationCap() {
 // The single entry of a bracket [a, b] with value(a) = fa > 0 >= fb = value(b): safeguarded
 // Newton-bisection that keeps the bracket. A Newton step is taken when it lands strictly inside
 // the bracket, and is at least eps * |x| long so that the bracket closes from both sides; when
-// two steps fail to halve the bracket, the next point is the midpoint. Stops when value() is
+// two steps fail to halve the bracket, the next point is the midpoint. A step that is small
+// against the bracket is doubled: Newton approaches a root from one side, so its own point
+// would move only that end, and the far end would come in by bisection alone (about a hundred
+// steps in double); twice the step, an error estimate, lands past the root and brings the far
+// end in too. Stops when value() is
 // exactly 0 (returns that point), when the bracket is narrower than 2 eps max(|a|, |b|) or holds
 // no representable point inside, or after solverIterationCap() steps; then returns a, the last
 // point with value > 0, which lies at or before the root.
@@ -156,6 +160,7 @@ Real solveEntry(const Value& value, const Slope& slope, Real a, Real b, Real fb,
         const Real minStep = eps * scale;
         if (fx > 0 && step < minStep) step = minStep;
         if (fx < 0 && step > -minStep) step = -minStep;
+        if (Real(4) * absOf(step) < width) step = two * step;
         const Real candidate = x + step;
         if (a < candidate && candidate < b) next = candidate;
       }
