@@ -221,10 +221,11 @@ PropertyResult compareModelDecisions(std::vector<PhysicalDecision> c, std::vecto
   };
   std::size_t i = 0, j = 0;
   while (i < c.size() && j < b.size()) {
+    const bool same = sameDecision(c[i], b[j]);
     // The same event at times further apart than the tolerance: the numbers have parted (at
     // 5000 L/s a position within the value tolerance is a time 2e-9 s off).
-    if (c[i].what == b[j].what && c[i].feature == b[j].feature && !sameDecision(c[i], b[j])) return {true, "", digest.h};
-    if (sameDecision(c[i], b[j]) || matchAhead(b, j, c[i]) || matchAhead(c, i, b[j])) {
+    if (!same && c[i].what == b[j].what && c[i].feature == b[j].feature) return {true, "", digest.h};
+    if (same || matchAhead(b, j, c[i]) || matchAhead(c, i, b[j])) {
       digest.add(c[i].what);
       if (!closeEnough(c[i], b[j])) return {true, "", digest.h};  // parted by amplified rounding: compared enough
       ++i;
