@@ -115,7 +115,26 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     const Real searchEnd = best ? Real(best->time - now) : horizon;
     if (const auto hit = swingingCapsuleTimeOfImpact(t, r, axis, searchEnd))
       if (!best || now + hit->tau < best->time) best = Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
+    if (!best && !(Real(limit - now) < Real(stopTime() - now))) best = strikeAsTheSwingEnds(*ball, r);
     return best;
+  }
+
+  // A ball that the capsule reaches just as the swing ends is struck then, at the stop (a
+  // collision runs before the flipper stop of the same instant). The gap closes to zero at the
+  // swing's last instant, where the search may round it to a hair above zero: a gap within the
+  // ball's position resolution, closing, counts as reached.
+  std::optional<Contact<Real>> strikeAsTheSwingEnds(const Ball<Real>& ball, const Real& r) const {
+    const Real end = stopTime();
+    const Trajectory<Real> t = ball.trajectoryAt(end);
+    const SwingingAxis<Real> axis = axisAt(end);
+    const Real resolution = positionResolution(t.p);
+    for (const int feature : {0, 1, 3}) {
+      const std::optional<SwingTouch<Real>> touch = swingTouchNow(t, r, axis, feature);
+      if (touch && touch->alongAxis && !(resolution < absOf(touch->gap)) &&
+          dot(Vec2<Real>(t.v - touch->surfaceVelocity), touch->normal) < Real(0))
+        return Contact<Real>{end, feature, EventKind::Collision};
+    }
+    return std::nullopt;
   }
 
   void collide(AbstractGizmo<Real>& other, const Contact<Real>& contact, BoardAccess<Real>& board) override {
