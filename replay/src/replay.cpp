@@ -218,10 +218,13 @@ class ComparingSink final : public ChunkSink {
     if (!std::equal(payload.begin(), payload.end(), log_.headerPayload().begin(), log_.headerPayload().end()))
       headerDiffers = true;
   }
-  void chunk(std::span<const std::uint8_t> payload, const ChunkEntry&) override {
+  void chunk(std::span<const std::uint8_t> payload, const ChunkEntry& entry) override {
     const std::size_t i = chunks++;
     if (i >= log_.chunks().size()) {
-      if (!log_.end()) throw LogEnds{};
+      if (!log_.end()) {
+        eventsInLog = entry.eventsDone;  // the events of the chunks before this one
+        throw LogEnds{};
+      }
       ours.assign(payload.begin(), payload.end());
       throw Parted{};
     }
@@ -235,6 +238,7 @@ class ComparingSink final : public ChunkSink {
 
   bool headerDiffers = false;
   std::size_t chunks = 0;
+  std::uint64_t eventsInLog = 0;  // when the log ends first
   std::vector<std::uint8_t> ours;
   std::optional<RunEnd> ended;
 
@@ -358,7 +362,7 @@ ReplayReport replayAs(const OpenedLog& log) {
     recorder.finish(completed, error);
   } catch (const ComparingSink::LogEnds&) {
     report.note = log.reader.truncation() + "; every decision it holds replays identically";
-    report.events = log.reader.chunks().empty() ? 0 : board->executedTotal();
+    report.events = sink.eventsInLog;
     return report;
   } catch (const ComparingSink::Parted&) {
     report.identical = false;

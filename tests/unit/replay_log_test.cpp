@@ -619,6 +619,10 @@ TEST(ReplayLog, CutOffLogsKeepTheirCompleteChunks) {
     const ReplayReport report = replayLog(*log);
     EXPECT_TRUE(report.identical) << describe(report);
     EXPECT_TRUE(contains(report.note, "cut off")) << "note: " << report.note;
+    // The events the complete chunks hold (not those of the run's chunk beyond them).
+    if (complete < chunks.size()) {
+      EXPECT_EQ(report.events, chunks[complete].eventsDone);
+    }
   }
 }
 
