@@ -143,6 +143,7 @@ class GameBoard final : private BoardAccess<Real> {
   bool frictionTicks() const;
   struct CellRange {
     int x0, x1, y0, y1;  // inclusive; empty when x1 < x0
+    bool operator==(const CellRange&) const = default;
   };
   static CellRange cellsOf(const Box<Real>& box);
   void placeBall(GizmoId id, bool inGrid);
@@ -166,7 +167,18 @@ class GameBoard final : private BoardAccess<Real> {
   // Built once per board change.
   bool built_ = false;
   std::vector<std::int32_t> ballIndex_;        // gizmo id → index into balls_, or −1
-  std::vector<GizmoId> colliders_;             // balls × gizmos: the pair's collider, or none
+  // Which side of each ball's pair with a gizmo is the collider: one byte per pair keeps the
+  // table of a board of 100 balls and 300 gizmos within the first-level cache.
+  enum class Collider : std::uint8_t { None, Ball, Other };
+  std::vector<Collider> colliders_;            // balls × gizmos
+  GizmoId colliderOf(GizmoId ball, GizmoId other) const {
+    switch (colliders_[std::size_t(ballIndex_[std::size_t(ball)]) * gizmos_.size() + std::size_t(other)]) {
+      case Collider::Ball: return ball;
+      case Collider::Other: return other;
+      case Collider::None: break;
+    }
+    return kNoGizmo;
+  }
   std::array<std::vector<GizmoId>, kBoardSize * kBoardSize> grid_;  // 1 L cells → fixed gizmos that reach into them
   std::array<std::vector<GizmoId>, kBoardSize * kBoardSize> ballGrid_;  // 1 L cells → free balls whose boxes reach in
   std::vector<CellRange> ballCells_;           // per gizmo: the cells of ballGrid_ it is listed in

@@ -41,11 +41,13 @@ template <class Real>
 void GameBoard<Real>::placeBall(GizmoId id, bool inGrid) {
   const std::size_t i = static_cast<std::size_t>(id);
   CellRange& old = ballCells_[i];
+  const CellRange now = inGrid ? cellsOf(boxes_[i]) : CellRange{0, -1, 0, -1};
+  // Most moves stay within the same cells (the order within a cell does not matter: the
+  // candidates taken from them are sorted by id).
+  if (now == old) return;
   for (int y = old.y0; y <= old.y1; ++y)
     for (int x = old.x0; x <= old.x1; ++x) std::erase(ballGrid_[std::size_t(y * kBoardSize + x)], id);
-  old = CellRange{0, -1, 0, -1};
-  if (!inGrid) return;
-  old = cellsOf(boxes_[i]);
+  old = now;
   for (int y = old.y0; y <= old.y1; ++y)
     for (int x = old.x0; x <= old.x1; ++x) ballGrid_[std::size_t(y * kBoardSize + x)].push_back(id);
 }
@@ -133,14 +135,15 @@ void GameBoard<Real>::rebuild() {
   ballIndex_.assign(n, -1);
   for (std::size_t i = 0; i < balls_.size(); ++i) ballIndex_[static_cast<std::size_t>(balls_[i])] = std::int32_t(i);
   // Each pair's collider is fixed: asked in id order, the first gizmo that can collide.
-  colliders_.assign(balls_.size() * n, kNoGizmo);
+  colliders_.assign(balls_.size() * n, Collider::None);
   for (std::size_t i = 0; i < balls_.size(); ++i)
     for (std::size_t g = 0; g < n; ++g) {
       const std::size_t b = static_cast<std::size_t>(balls_[i]);
       if (g == b) continue;
       const std::size_t lo = std::min(g, b), hi = std::max(g, b);
       const PairRole r = formPair(*gizmos_[lo], *gizmos_[hi]);
-      if (r != PairRole::None) colliders_[i * n + g] = GizmoId(r == PairRole::FirstCollides ? lo : hi);
+      if (r == PairRole::None) continue;
+      colliders_[i * n + g] = (r == PairRole::FirstCollides ? lo : hi) == b ? Collider::Ball : Collider::Other;
     }
   for (auto& cell : grid_) cell.clear();
   for (auto& cell : ballGrid_) cell.clear();
@@ -495,8 +498,7 @@ void GameBoard<Real>::gatherCandidates(GizmoId ballId, std::vector<GizmoId>& out
 // recalculate event bounds that wait by the maximum tick length).
 template <class Real>
 void GameBoard<Real>::computePair(GizmoId ballId, GizmoId other) {
-  const std::size_t n = gizmos_.size();
-  const GizmoId collider = colliders_[std::size_t(ballIndex_[std::size_t(ballId)]) * n + std::size_t(other)];
+  const GizmoId collider = colliderOf(ballId, other);
   if (collider == kNoGizmo) return;
   const Real limit = minOf(validUntil_[std::size_t(ballId)], validUntil_[std::size_t(other)]);
   if (!(limit < infinity())) return;  // neither side can move: nothing to predict

@@ -41,7 +41,7 @@ void GameBoard<Real>::checkRestoredEvent(const Event<Real>& e, const BoardState<
       if (!isGizmoId(e.a) || !isGizmoId(e.b) || e.a == e.b) fail("not a pair of gizmos");
       const GizmoId ball = isBallId(e.a) ? e.a : e.b, other = ball == e.a ? e.b : e.a;
       if (!isBallId(ball)) fail("no ball involved");
-      if (colliders_[std::size_t(ballIndex_[std::size_t(ball)]) * gizmos_.size() + std::size_t(other)] != e.a)
+      if (colliderOf(ball, other) != e.a)
         fail("not the collider of a formed pair");
       break;
     }
