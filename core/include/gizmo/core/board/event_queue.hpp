@@ -69,9 +69,8 @@ class EventQueue {
     if (g < 0 || static_cast<std::size_t>(g) >= byGizmo_.size()) return;
     std::vector<Handle>& list = byGizmo_[static_cast<std::size_t>(g)];
     for (const Handle& h : list) {
-      SlotState& s = states_[h.slot];
-      if (s.serial != h.serial || !s.alive) continue;
-      s.alive = false;
+      if (!holds(h)) continue;
+      states_[h.slot].alive = false;
       --aliveCount_;
       ++deadInHeap_;
       onRemoved(events_[h.slot]);
@@ -133,6 +132,11 @@ class EventQueue {
     std::uint32_t slot;
     std::uint32_t serial;
   };
+  // Whether the handle's event is still queued: its slot alive and not recycled since.
+  bool holds(const Handle& h) const {
+    const SlotState& s = states_[h.slot];
+    return s.serial == h.serial && s.alive;
+  }
 
   void track(GizmoId g, std::uint32_t slot, std::uint32_t serial) {
     if (g < 0) return;
@@ -141,7 +145,7 @@ class EventQueue {
     std::vector<Handle>& list = byGizmo_[i];
     // Keep the per-gizmo list short: drop handles of events that are gone.
     if (list.size() >= 16 && list.size() % 16 == 0) {
-      std::erase_if(list, [&](const Handle& h) { return states_[h.slot].serial != h.serial || !states_[h.slot].alive; });
+      std::erase_if(list, [&](const Handle& h) { return !holds(h); });
     }
     list.push_back(Handle{slot, serial});
   }
