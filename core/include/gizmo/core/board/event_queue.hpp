@@ -173,10 +173,11 @@ class EventQueue {
   // A 4-ary heap: half the levels of a binary one, and a node's children share cache lines, so a
   // pop visits fewer distant entries. Both sifts carry the entry in hand and move others past it.
   static constexpr std::size_t kArity = 4;
+  static std::size_t parentOf(std::size_t i) { return (i - 1) / kArity; }
   void siftUp(std::size_t i) {
     HeapEntry x = std::move(heap_[i]);
     while (i > 0) {
-      const std::size_t parent = (i - 1) / kArity;
+      const std::size_t parent = parentOf(i);
       if (!before(x, heap_[parent])) break;
       heap_[i] = std::move(heap_[parent]);
       i = parent;
@@ -221,8 +222,8 @@ class EventQueue {
       ++kept;
     }
     heap_.erase(heap_.begin() + std::ptrdiff_t(kept), heap_.end());
-    for (std::size_t i = kept / kArity + 1; i-- > 0;)
-      if (i < kept) siftDown(i);
+    if (kept > 1)  // every entry with children, from the last one's parent up to the root
+      for (std::size_t i = parentOf(kept - 1) + 1; i-- > 0;) siftDown(i);
     deadInHeap_ = 0;
   }
 

@@ -99,14 +99,14 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     // below only finds gaps that go from positive to zero, and this gap starts at zero. (Half of
     // restSpeed: the minimum bounce sends a ball off at restSpeed, which must not count again.)
     const SwingingAxis<Real> axis = axisAt(now);
-    for (const int feature : {0, 1, 3}) {
-      const std::optional<SwingTouch<Real>> touch = swingTouchNow(t, r, axis, feature);
-      if (touch && touch->alongAxis && !(Real(0) < touch->gap) &&
-          dot(Vec2<Real>(t.v - touch->surfaceVelocity), touch->normal) < params.restSpeed / Real(2) &&
-          Real(dot(t.a, touch->normal) + touch->bend) < Real(0))
-        return Contact<Real>{now, feature, EventKind::Collision};
-    }
-    const Real horizon = minOf(Real(limit - now), Real(stopTime() - now));
+    const std::optional<int> pressed = touchedFeature(t, r, axis, [&](const SwingTouch<Real>& touch) {
+      return !(Real(0) < touch.gap) &&
+             dot(Vec2<Real>(t.v - touch.surfaceVelocity), touch.normal) < params.restSpeed / Real(2) &&
+             Real(dot(t.a, touch.normal) + touch.bend) < Real(0);
+    });
+    if (pressed) return Contact<Real>{now, *pressed, EventKind::Collision};
+    const Real toLimit = limit - now, toStop = stopTime() - now;
+    const Real horizon = minOf(toLimit, toStop);
     std::optional<Contact<Real>> best;
     // The pivot end does not move while the flipper turns.
     const CircleFeature<Real> pivotEnd{pivot_, fromDouble<Real>(kFlipperRadius)};
@@ -115,8 +115,20 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     const Real searchEnd = best ? Real(best->time - now) : horizon;
     if (const auto hit = swingingCapsuleTimeOfImpact(t, r, axis, searchEnd))
       if (!best || now + hit->tau < best->time) best = Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
-    if (!best && !(Real(limit - now) < Real(stopTime() - now))) best = strikeAsTheSwingEnds(*ball, r);
+    if (!best && !(toLimit < toStop)) best = strikeAsTheSwingEnds(*ball, r);
     return best;
+  }
+
+  // The first of the moving capsule's features (the sides, then the tip) that the ball touches
+  // along the axis and that `accept` takes.
+  template <class Accept>
+  static std::optional<int> touchedFeature(const Trajectory<Real>& t, const Real& r, const SwingingAxis<Real>& axis,
+                                           Accept&& accept) {
+    for (const int feature : {0, 1, 3}) {
+      const std::optional<SwingTouch<Real>> touch = swingTouchNow(t, r, axis, feature);
+      if (touch && touch->alongAxis && accept(*touch)) return feature;
+    }
+    return std::nullopt;
   }
 
   // A ball that the capsule reaches just as the swing ends is struck then, at the stop (a
@@ -128,13 +140,14 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     const Trajectory<Real> t = ball.trajectoryAt(end);
     const SwingingAxis<Real> axis = axisAt(end);
     const Real resolution = positionResolution(t.p);
-    for (const int feature : {0, 1, 3}) {
-      const std::optional<SwingTouch<Real>> touch = swingTouchNow(t, r, axis, feature);
-      if (touch && touch->alongAxis && !(resolution < absOf(touch->gap)) &&
-          dot(Vec2<Real>(t.v - touch->surfaceVelocity), touch->normal) < Real(0))
-        return Contact<Real>{end, feature, EventKind::Collision};
-    }
-    return std::nullopt;
+    // Out of the capsule's reach about the pivot: no feature is near, and no trigonometry is spent.
+    const Real reach = axis.length + axis.radius + r + resolution;
+    if (reach * reach < lengthSquared(Vec2<Real>(t.p - axis.pivot))) return std::nullopt;
+    const std::optional<int> reached = touchedFeature(t, r, axis, [&](const SwingTouch<Real>& touch) {
+      return !(resolution < absOf(touch.gap)) && dot(Vec2<Real>(t.v - touch.surfaceVelocity), touch.normal) < Real(0);
+    });
+    if (!reached) return std::nullopt;
+    return Contact<Real>{end, *reached, EventKind::Collision};
   }
 
   void collide(AbstractGizmo<Real>& other, const Contact<Real>& contact, BoardAccess<Real>& board) override {
