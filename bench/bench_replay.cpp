@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "bench_boards.hpp"
@@ -93,7 +94,59 @@ void replayed(benchmark::State& state, const BoardSpec& board, const char* name)
   std::filesystem::remove(path);
 }
 
+// The least any log of every decision can cost, for the recording goal's sake: the board builds
+// its reports for an observer that either drops them (the seam alone) or copies each report's
+// raw fields into a buffer made ready beforehand (no encoding, no checksum, no file).
+class RawCopyObserver final : public BoardObserver<double> {
+ public:
+  explicit RawCopyObserver(std::size_t capacity) : buffer_(capacity) {}
+  std::size_t bytes() const { return std::size_t(at_ - buffer_.data()); }
+  bool overflowed() const { return overflowed_; }
+  void rewind() { at_ = buffer_.data(); }
+
+  void eventScheduled(const Event<double>& e) override { put(std::uint8_t(1), e.time, e.kind, e.a, e.b, e.feature); }
+  void eventRemoved(const Event<double>& e) override { put(std::uint8_t(2), e.sequence); }
+  void eventExecuted(const Event<double>& e, const EventOutcome<double>& o) override {
+    put(std::uint8_t(3), e.sequence);
+    for (const BallChange<double>& c : o.balls()) put(c.position, c.velocityBefore, c.velocityAfter);
+  }
+  void triggerFired(const double& t, GizmoId source, GizmoId target) override { put(std::uint8_t(4), t, source, target); }
+  void actionPerformed(const double& t, GizmoId target) override { put(std::uint8_t(5), t, target); }
+  void inputApplied(const double& t, int key, KeyDirection d) override { put(std::uint8_t(6), t, key, d); }
+  void modelRuleApplied(const double& t, ModelRule r, GizmoId g, GizmoId other) override { put(std::uint8_t(7), t, r, g, other); }
+  void tickBoundary(const double& t) override { put(std::uint8_t(8), t); }
+
+ private:
+  template <class... T>
+  void put(const T&... values) {
+    if (std::size_t(buffer_.data() + buffer_.size() - at_) < (sizeof values + ...)) {
+      overflowed_ = true;
+      return;
+    }
+    ((std::memcpy(at_, &values, sizeof values), at_ += sizeof values), ...);
+  }
+  std::vector<std::uint8_t> buffer_;
+  std::uint8_t* at_ = buffer_.data();
+  bool overflowed_ = false;
+};
+
+void observed(benchmark::State& state, const BoardSpec& board, bool copy) {
+  const RunRequest r = request(board);
+  std::uint64_t events = 0, bytes = 0;
+  BoardObserver<double> silent;
+  RawCopyObserver raw(16u << 20);  // a 60 s spec-example run makes under 1 MB
+  for (auto _ : state) {
+    raw.rewind();
+    events += simulate<double>(r, copy ? &raw : &silent).total;
+    bytes += raw.bytes();
+  }
+  if (raw.overflowed()) state.SkipWithError("the raw copy outgrew its buffer");
+  counters(state, events, bytes);
+}
+
 void BM_SpecUnrecorded(benchmark::State& s) { unrecorded(s, specExample()); }
+void BM_SpecObservedSilently(benchmark::State& s) { observed(s, specExample(), false); }
+void BM_SpecRawCopied(benchmark::State& s) { observed(s, specExample(), true); }
 void BM_SpecRecordedInMemory(benchmark::State& s) { recordedInMemory(s, specExample()); }
 void BM_SpecRecordedToFile(benchmark::State& s) { recordedToFile(s, specExample(), "spec"); }
 void BM_SpecReplayed(benchmark::State& s) { replayed(s, specExample(), "spec-replay"); }
@@ -126,6 +179,8 @@ double fastest(const std::vector<double>& v) { return *std::min_element(v.begin(
 #define GIZMO_REPLAY_BENCHMARK(fn) BENCHMARK(fn)->Unit(benchmark::kMillisecond)->ComputeStatistics("min", fastest)
 
 GIZMO_REPLAY_BENCHMARK(BM_SpecUnrecorded);
+GIZMO_REPLAY_BENCHMARK(BM_SpecObservedSilently);
+GIZMO_REPLAY_BENCHMARK(BM_SpecRawCopied);
 GIZMO_REPLAY_BENCHMARK(BM_SpecRecordedInMemory);
 GIZMO_REPLAY_BENCHMARK(BM_SpecRecordedToFile);
 GIZMO_REPLAY_BENCHMARK(BM_SpecReplayed);

@@ -6,6 +6,7 @@
 // Both keep the same small context, reset at every chunk's keyframe: the current time (times
 // are written against it), the next sequence number (events are named by their distance from
 // it) and the last position and velocity written (outcomes are written against them).
+#include <array>
 #include <limits>
 #include <optional>
 #include <unordered_map>
@@ -19,23 +20,28 @@
 
 namespace gizmo::replay {
 
-// Which of a, b and feature an event of each kind uses; the others are −1.
-struct EventFields {
-  bool a, b, feature;
-};
-inline EventFields scheduledFields(EventKind k) {
-  switch (k) {
-    case EventKind::Collision:
-    case EventKind::Leave: return {true, true, true};
-    case EventKind::Input: return {false, true, true};
-    case EventKind::EndOfTick: return {false, false, false};
-    default: return {true, false, false};
+// Which of a, b and feature an event of each kind uses (the others are −1), as a mask of these
+// bits. A table, not a switch: the encoder asks once per scheduled event.
+inline constexpr std::uint8_t kFieldA = 1, kFieldB = 2, kFieldFeature = 4, kAllFields = 7;
+inline constexpr std::array<std::uint8_t, kEventKindCount> kScheduledFields = [] {
+  std::array<std::uint8_t, kEventKindCount> fields{};
+  for (int k = 0; k < kEventKindCount; ++k) {
+    switch (static_cast<EventKind>(k)) {
+      case EventKind::Collision:
+      case EventKind::Leave: fields[std::size_t(k)] = kAllFields; break;
+      case EventKind::Input: fields[std::size_t(k)] = kFieldB | kFieldFeature; break;
+      case EventKind::EndOfTick: fields[std::size_t(k)] = 0; break;
+      default: fields[std::size_t(k)] = kFieldA; break;
+    }
   }
-}
-// Whether the short form (only the fields its kind uses) holds the event.
+  return fields;
+}();
+inline std::uint8_t scheduledFields(EventKind k) { return kScheduledFields[static_cast<std::size_t>(k)]; }
+// Whether the short form (only the fields its kind uses) holds the event: it sets no other.
 template <class Real>
-bool shortFormHolds(const Event<Real>& e, const EventFields& f) {
-  return (f.a || e.a == kNoGizmo) && (f.b || e.b == kNoGizmo) && (f.feature || e.feature == -1);
+bool shortFormHolds(const Event<Real>& e, std::uint8_t uses) {
+  const unsigned set = unsigned(e.a != kNoGizmo) | unsigned(e.b != kNoGizmo) << 1 | unsigned(e.feature != -1) << 2;
+  return (set & ~unsigned(uses)) == 0;
 }
 
 template <class Real>
@@ -110,17 +116,18 @@ class RecordEncoder {
     ++records_;
     if (e.sequence != c_.nextSequence) throw std::logic_error("replay: events scheduled out of sequence");
     ++c_.nextSequence;
-    const EventFields f = scheduledFields(e.kind);
-    const bool fits = shortFormHolds(e, f);
+    const std::uint8_t uses = scheduledFields(e.kind);
+    const bool fits = shortFormHolds(e, uses);
+    const std::uint8_t written = fits ? uses : kAllFields;
     std::uint8_t tag = static_cast<std::uint8_t>(e.kind);
     if (!fits) tag |= kScheduledAllFields;
     std::int64_t k = 0;
     const TimeForm form = timeForm(e, k);
     Out o(out_, 1 + 4 * kVarint + kScalar);
     o.u8(static_cast<std::uint8_t>(tag | (static_cast<std::uint8_t>(form) << 3)));
-    if (!fits || f.a) o.svarint(e.a);
-    if (!fits || f.b) o.svarint(e.b);
-    if (!fits || f.feature) o.svarint(e.feature);
+    if (written & kFieldA) o.svarint(e.a);
+    if (written & kFieldB) o.svarint(e.b);
+    if (written & kFieldFeature) o.svarint(e.feature);
     if (form == TimeForm::FrictionGrid || form == TimeForm::TickGrid) o.varint(std::uint64_t(k));
     if (form == TimeForm::Explicit) o.scalar(e.time, c_.now);
   }
@@ -373,13 +380,13 @@ class RecordDecoder {
       const std::uint8_t kind = tag & 7, form = (tag >> 3) & 7;
       e.kind = static_cast<EventKind>(kind);
       const bool all = tag & kScheduledAllFields;
-      const EventFields f = scheduledFields(e.kind);
-      if (all || f.a) e.a = gizmoId();
-      if (all || f.b) e.b = gizmoId();
-      if (all || f.feature) e.feature = static_cast<std::int32_t>(bounded(INT32_MIN, INT32_MAX));
+      const std::uint8_t uses = scheduledFields(e.kind), written = all ? kAllFields : uses;
+      if (written & kFieldA) e.a = gizmoId();
+      if (written & kFieldB) e.b = gizmoId();
+      if (written & kFieldFeature) e.feature = static_cast<std::int32_t>(bounded(INT32_MIN, INT32_MAX));
       // Every event has one spelling: the full form only for an event its kind's short form
       // cannot hold.
-      if (all && shortFormHolds(e, f))
+      if (all && shortFormHolds(e, uses))
         throw FormatError("an event written in full that its short form holds", start);
       switch (static_cast<TimeForm>(form)) {
         case TimeForm::Now: e.time = c_.now; break;

@@ -242,14 +242,20 @@ template <class Real>
 void GameBoard<Real>::execute(const Event<Real>& e) {
   ++executed_[static_cast<std::size_t>(e.kind)];
   ++executedTotal_;
+  // The report: each ball the event names, before and after. The balls are found once, by the
+  // ball index rather than a virtual call, and only when someone is listening.
   EventOutcome<Real> outcome;
-  auto before = [&](GizmoId id) {
-    if (!observer_ || id < 0) return;
-    if (const Ball<Real>* b = gizmo(id).asBall())
-      outcome.add(BallChange<Real>{id, b->positionAt(now_), b->velocityAt(now_), Vec2<Real>()});
-  };
-  before(e.a);
-  if (e.b != e.a && e.kind != EventKind::Input) before(e.b);
+  std::array<const Ball<Real>*, 2> touched{};
+  if (observer_) {
+    auto before = [&](GizmoId id) {
+      if (!isBallId(id)) return;
+      const Ball<Real>& b = static_cast<const Ball<Real>&>(*gizmos_[std::size_t(id)]);
+      touched[outcome.count] = &b;
+      outcome.add(BallChange<Real>{id, b.positionAt(now_), b.velocityAt(now_), Vec2<Real>()});
+    };
+    before(e.a);
+    if (e.b != e.a && e.kind != EventKind::Input) before(e.b);
+  }
 
   switch (e.kind) {
     case EventKind::Collision:
@@ -309,7 +315,7 @@ void GameBoard<Real>::execute(const Event<Real>& e) {
   }
 
   if (observer_) {
-    for (BallChange<Real>& c : outcome.balls()) c.velocityAfter = gizmo(c.ball).asBall()->velocityAt(now_);
+    for (std::size_t i = 0; i < outcome.count; ++i) outcome.changes[i].velocityAfter = touched[i]->velocityAt(now_);
     observer_->eventExecuted(e, outcome);
   }
 }
