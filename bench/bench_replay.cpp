@@ -1,6 +1,7 @@
 // The replay log's costs, each against the same run unrecorded in the same process: recording
-// (to a sink that keeps nothing, and to a file), replaying (re-simulating and comparing every
-// chunk), seeking to the middle of a long log, and the log's size per executed event.
+// (to a sink that keeps nothing, and to a file), replaying (re-simulating and checking every
+// chunk's digest, or comparing every record), seeking to the middle of a long log, and the log's
+// size per executed event.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -78,7 +79,8 @@ void recordedToFile(benchmark::State& state, const BoardSpec& board, const char*
   std::filesystem::remove(path);
 }
 
-void replayed(benchmark::State& state, const BoardSpec& board, const char* name) {
+void replayed(benchmark::State& state, const BoardSpec& board, const char* name,
+              replay::ReplayMethod method = replay::ReplayMethod::Digests) {
   const std::string path = logPath(name);
   {
     replay::LogWriter writer(path);
@@ -86,7 +88,7 @@ void replayed(benchmark::State& state, const BoardSpec& board, const char* name)
   }
   std::uint64_t events = 0;
   for (auto _ : state) {
-    const replay::ReplayReport report = replay::replayLog(replay::openLog(path));
+    const replay::ReplayReport report = replay::replayLog(replay::openLog(path), method);
     if (!report.identical) state.SkipWithError("the replay differs from the log");
     events += report.events;
   }
@@ -150,6 +152,9 @@ void BM_SpecRawCopied(benchmark::State& s) { observed(s, specExample(), true); }
 void BM_SpecRecordedInMemory(benchmark::State& s) { recordedInMemory(s, specExample()); }
 void BM_SpecRecordedToFile(benchmark::State& s) { recordedToFile(s, specExample(), "spec"); }
 void BM_SpecReplayed(benchmark::State& s) { replayed(s, specExample(), "spec-replay"); }
+void BM_SpecReplayedEveryRecord(benchmark::State& s) {
+  replayed(s, specExample(), "spec-replay-records", replay::ReplayMethod::Records);
+}
 void BM_CrowdedUnrecorded(benchmark::State& s) { unrecorded(s, crowdedBoard()); }
 void BM_CrowdedRecordedToFile(benchmark::State& s) { recordedToFile(s, crowdedBoard(), "crowded"); }
 void BM_CrowdedReplayed(benchmark::State& s) { replayed(s, crowdedBoard(), "crowded-replay"); }
@@ -184,6 +189,7 @@ GIZMO_REPLAY_BENCHMARK(BM_SpecRawCopied);
 GIZMO_REPLAY_BENCHMARK(BM_SpecRecordedInMemory);
 GIZMO_REPLAY_BENCHMARK(BM_SpecRecordedToFile);
 GIZMO_REPLAY_BENCHMARK(BM_SpecReplayed);
+GIZMO_REPLAY_BENCHMARK(BM_SpecReplayedEveryRecord);
 GIZMO_REPLAY_BENCHMARK(BM_CrowdedUnrecorded);
 GIZMO_REPLAY_BENCHMARK(BM_CrowdedRecordedToFile);
 GIZMO_REPLAY_BENCHMARK(BM_CrowdedReplayed);

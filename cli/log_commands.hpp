@@ -19,6 +19,7 @@ struct ReplayOptions {
   std::optional<double> at;
   std::optional<long long> event;
   bool json = false;
+  bool everyRecord = false;  // compare record by record, not by chunk digests
 };
 int replayCommand(const ReplayOptions& options);
 

@@ -43,6 +43,9 @@ int main(int argc, char** argv) {
   replayCmd->add_option("--at", replay.at, "Show the state at this board time (seconds)");
   replayCmd->add_option("--event", replay.event, "Show the state after this many events");
   replayCmd->add_flag("--json", replay.json, "Print one JSON object");
+  replayCmd->add_flag("--every-record", replay.everyRecord,
+                      "Encode the run and compare it with the log record by record, not by each chunk's digest\n"
+                      "(slower; a difference is always found and shown this way)");
   replayCmd->callback([&] { code = replayCommand(replay); });
 
   DiffOptions diff;

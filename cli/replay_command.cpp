@@ -32,9 +32,12 @@ int seek(const replay::OpenedLog& log, const ReplayOptions& o) {
 }
 
 int compare(const replay::OpenedLog& log, const ReplayOptions& o) {
-  const replay::ReplayReport r = replay::replayLog(log);
+  const replay::ReplayReport r =
+      replay::replayLog(log, o.everyRecord ? replay::ReplayMethod::Records : replay::ReplayMethod::Digests);
+  const char* compared = r.byDigests ? "chunk digests and keyframes" : "every record";
   if (o.json) {
     nlohmann::ordered_json j{{"identical", r.identical}, {"events", r.events}, {"note", r.note}};
+    if (r.identical) j["compared"] = compared;
     if (!r.identical) {
       j["where"] = r.where;
       j["decisions_identical"] = r.decisions;
@@ -47,9 +50,9 @@ int compare(const replay::OpenedLog& log, const ReplayOptions& o) {
     return r.identical ? kExitOk : kExitCheckFailed;
   }
   if (r.identical) {
-    std::printf("identical: %llu events replay exactly as recorded (%s, %s)\n",
+    std::printf("identical: %llu events replay exactly as recorded (%s, %s; compared: %s)\n",
                 static_cast<unsigned long long>(r.events), log.header.precision.c_str(),
-                std::string(motionModelName(log.header.model)).c_str());
+                std::string(motionModelName(log.header.model)).c_str(), compared);
     if (!r.note.empty()) std::printf("note: %s\n", r.note.c_str());
     return kExitOk;
   }

@@ -7,10 +7,6 @@ namespace gizmo::replay {
 
 namespace {
 
-constexpr std::uint64_t kStart = 0x9E3779B97F4A7C15ULL;
-constexpr std::uint64_t kWordMultiplier = 0x9FB21C651E98DF25ULL;
-constexpr std::uint64_t kFinalMultiplier = 0xD6E8FEB86659FD93ULL;
-
 // memcpy rather than a pointer cast: the data has no alignment guarantee, and compilers turn a
 // fixed 8-byte memcpy into a single load.
 inline std::uint64_t loadWord(const std::uint8_t* p) {
@@ -20,30 +16,22 @@ inline std::uint64_t loadWord(const std::uint8_t* p) {
   return w;
 }
 
-inline std::uint64_t mixWord(std::uint64_t h, std::uint64_t w) {
-  return std::rotl(h ^ w, 31) * kWordMultiplier;
-}
-
 }  // namespace
 
 std::uint64_t checksum64(std::span<const std::uint8_t> data, std::uint64_t seed) {
-  std::uint64_t h = seed ^ kStart;
+  std::uint64_t h = seed ^ kChecksumStart;
   const std::uint8_t* p = data.data();
   const std::size_t fullWords = data.size() / 8;
-  for (std::size_t i = 0; i < fullWords; ++i) h = mixWord(h, loadWord(p + 8 * i));
+  for (std::size_t i = 0; i < fullWords; ++i) h = mixChecksumWord(h, loadWord(p + 8 * i));
 
   const std::size_t tail = data.size() % 8;
   if (tail != 0) {
     std::uint8_t padded[8] = {};
     std::memcpy(padded, p + 8 * fullWords, tail);
-    h = mixWord(h, loadWord(padded));
+    h = mixChecksumWord(h, loadWord(padded));
   }
 
-  h ^= static_cast<std::uint64_t>(data.size());
-  h ^= h >> 32;
-  h *= kFinalMultiplier;
-  h ^= h >> 32;
-  return h;
+  return finishChecksum(h, static_cast<std::uint64_t>(data.size()));
 }
 
 }  // namespace gizmo::replay

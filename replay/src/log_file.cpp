@@ -167,6 +167,7 @@ void LogWriter::finish(const RunEnd& end) {
     w.varint(e.eventsDone - prev.eventsDone);
     w.varint(e.ticksDone - prev.ticksDone);
     w.u64(std::bit_cast<std::uint64_t>(e.time));
+    w.u64(e.digest.value_or(0));
     prev = e;
   }
   w.u8(end.completed ? 1 : 0);
@@ -201,6 +202,10 @@ LogReader::LogReader(std::unique_ptr<ByteSource> source, bool verifyChecksums)
                           std::to_string(kFormatVersion) + ")",
                       8);
   if (version_ == 0) throw FormatError("log format version 0 does not exist", 8);
+  if (version_ < kFormatVersion)
+    throw FormatError("log format version " + std::to_string(version_) + " is older than this build reads (" +
+                          std::to_string(kFormatVersion) + "); record the run again",
+                      8);
   if (r.u16() != 0) throw FormatError("reserved bytes are not zero", 10);
   if (size == kFileHeaderSize) throw FormatError("the log ends before its header frame", size);
   header_ = readFrame(kFileHeaderSize, std::uint8_t(FrameType::Header), &firstChunk_);
@@ -260,7 +265,7 @@ bool LogReader::readThroughIndex() {
 void LogReader::parseIndex(std::span<const std::uint8_t> payload) {
   ByteReader r(payload);
   const std::uint64_t n = r.varint();
-  if (n > r.remaining() / 11) throw FormatError("index: more chunks than bytes", 0);
+  if (n > r.remaining() / 19) throw FormatError("index: more chunks than bytes", 0);
   chunks_.clear();
   ChunkEntry prev;
   for (std::uint64_t i = 0; i < n; ++i) {
@@ -269,6 +274,7 @@ void LogReader::parseIndex(std::span<const std::uint8_t> payload) {
     e.eventsDone = prev.eventsDone + r.varint();
     e.ticksDone = prev.ticksDone + r.varint();
     e.time = std::bit_cast<double>(r.u64());
+    e.digest = r.u64();
     chunks_.push_back(e);
     prev = e;
   }
@@ -316,8 +322,7 @@ void LogReader::walkFrames(std::uint64_t from) {
       const std::vector<ChunkEntry> walked = chunks_;
       parseIndex(payload);
       if (!std::equal(walked.begin(), walked.end(), chunks_.begin(), chunks_.end(), sameEntry)) throw FormatError("the index disagrees with the chunks", at);
-      chunks_ = walked;
-      chunksEnd_ = at;
+      chunksEnd_ = at;  // the index's entries are the walked ones, with their digests
       if (size - next >= kTrailerSize) throw FormatError("the trailer is corrupt", size - kTrailerSize);
       at = next;
       truncation_ = "the log's trailer is cut off; all " + std::to_string(chunks_.size()) + " chunks are read";

@@ -2,9 +2,11 @@
 // precision named in the log's header.
 #include "gizmo/replay/replay.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include "gizmo/replay/chunk.hpp"
+#include "gizmo/replay/decision_digest.hpp"
 #include "gizmo/replay/format_error.hpp"
 #include "gizmo/replay/recorder.hpp"
 
@@ -338,16 +340,132 @@ void explainParting(const OpenedLog& log, ComparingSink& sink, ReplayReport& rep
   report.events = ours.events();
 }
 
+// Replaying by digests: the run made again with nothing encoded. Each chunk's reports are
+// digested and checked against the index at the tick where the log's next chunk begins, and that
+// chunk (read, so its checksum is checked) must start from the run's state there, byte for byte.
+// Anything else that differs is for the record-by-record comparison to find and explain.
 template <class Real>
-ReplayReport replayAs(const OpenedLog& log) {
+class DigestChecker final : public BoardObserver<Real> {
+ public:
+  struct Differs {};
+
+  DigestChecker(const LogReader& log, const GameBoard<Real>& board) : log_(log), board_(board) {
+    readChunk(0);
+  }
+
+  void eventScheduled(const Event<Real>& e) override { digest_.scheduled(e); }
+  void eventRemoved(const Event<Real>& e) override { digest_.removed(e); }
+  void eventExecuted(const Event<Real>& e, const EventOutcome<Real>& o) override { digest_.executed(e, o); }
+  void triggerFired(const Real& t, GizmoId s, GizmoId g) override { digest_.trigger(t, s, g); }
+  void actionPerformed(const Real& t, GizmoId g) override { digest_.action(t, g); }
+  void inputApplied(const Real& t, int key, KeyDirection d) override { digest_.input(t, key, d); }
+  void modelRuleApplied(const Real& t, ModelRule r, GizmoId g, GizmoId o) override { digest_.rule(t, r, g, o); }
+  void tickBoundary(const Real& t) override {
+    digest_.tick(t);
+    ++ticks_;
+    const std::vector<ChunkEntry>& chunks = log_.chunks();
+    if (chunk_ + 1 < chunks.size() && ticks_ == chunks[chunk_ + 1].ticksDone) {
+      closeChunk();
+      readChunk(++chunk_);
+      const std::vector<std::uint8_t> ours = stateBytes(board_.saveState());
+      if (!std::ranges::equal(ours, start_.keyframe) || start_.preamble.eventsDone != board_.executedTotal())
+        throw Differs{};
+    }
+  }
+
+  // After the run: it must have reached the log's last chunk, whose digest must match too.
+  void finish() {
+    if (chunk_ + 1 != log_.chunks().size()) throw Differs{};
+    closeChunk();
+  }
+
+ private:
+  void readChunk(std::size_t i) {
+    payload_ = log_.chunkPayload(i);
+    start_ = readChunkStart(payload_);
+    digest_.reset();
+  }
+  void closeChunk() {
+    if (log_.chunks()[chunk_].digest != digest_.value()) throw Differs{};
+  }
+
+  const LogReader& log_;
+  const GameBoard<Real>& board_;
+  DecisionDigest<Real> digest_;
+  std::vector<std::uint8_t> payload_;  // the current chunk's, which start_ points into
+  ChunkStart start_;
+  std::size_t chunk_ = 0;
+  std::uint64_t ticks_ = 0;
+};
+
+// Whether the run's end differs from the log's, and how, in words; empty when it does not.
+std::string endDifference(const OpenedLog& log, const RunEnd& run) {
+  const std::optional<RunEnd>& end = log.reader.end();
+  if (end && (end->completed != run.completed || end->events != run.events))
+    return "the run ends differently: " + (run.completed ? std::string("completed") : run.message);
+  return {};
+}
+
+// The notes an identical replay carries.
+std::string notesOf(const OpenedLog& log, bool headerDiffers) {
+  std::vector<std::string> notes;
+  if (headerDiffers) notes.push_back("the header was written by another version (" + log.header.toolkit + ")");
+  if (!log.reader.truncation().empty()) notes.push_back(log.reader.truncation());
+  std::string note;
+  for (const std::string& n : notes) note += (note.empty() ? "" : "; ") + n;
+  return note;
+}
+
+// A replay by digests on a board prepared for the log's run, or nullopt when something differs.
+template <class Real>
+std::optional<ReplayReport> replayByDigests(const OpenedLog& log, std::unique_ptr<GameBoard<Real>> board) {
+  RunEnd run;
+  try {
+    DigestChecker<Real> checker(log.reader, *board);
+    board->setObserver(&checker);
+    run.completed = true;
+    try {
+      continueRun(*board, log.request, 0);
+    } catch (const StallError& e) {
+      run.completed = false;
+      run.message = e.what();
+    }
+    checker.finish();
+  } catch (const typename DigestChecker<Real>::Differs&) {
+    return std::nullopt;
+  }
+  run.events = board->executedTotal();
+  if (!endDifference(log, run).empty()) return std::nullopt;
   ReplayReport report;
-  ComparingSink sink(log.reader);
+  report.byDigests = true;
+  report.events = run.events;
+  report.note = notesOf(log, false);
+  return report;
+}
+
+// Whether the log's index gives every chunk's digest (a log cut off before its index has none;
+// one whose index lists no chunk has nothing to check them against).
+bool hasDigests(const OpenedLog& log) {
+  const std::vector<ChunkEntry>& chunks = log.reader.chunks();
+  return log.reader.end() && !chunks.empty() &&
+         std::ranges::all_of(chunks, [](const ChunkEntry& e) { return e.digest.has_value(); });
+}
+
+template <class Real>
+ReplayReport replayAs(const OpenedLog& log, ReplayMethod method) {
+  ReplayReport report;
   std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(log.request);
   if (paramBytes(board->params()) != log.header.params) {
     report.identical = false;
     report.where = "this build derives different simulation parameters from the log's board";
     return report;
   }
+  const bool digestsTried = method == ReplayMethod::Digests && hasDigests(log);
+  if (digestsTried) {
+    if (std::optional<ReplayReport> r = replayByDigests<Real>(log, std::move(board))) return *r;
+    board = prepareRun<Real>(log.request);
+  }
+  ComparingSink sink(log.reader);
   Recorder<Real> recorder(sink, *board);
   board->setObserver(&recorder);
   bool completed = true;
@@ -375,16 +493,20 @@ ReplayReport replayAs(const OpenedLog& log) {
                    std::to_string(log.reader.chunks().size());
     return report;
   }
-  if (log.reader.end() && sink.ended &&
-      (log.reader.end()->completed != sink.ended->completed || log.reader.end()->events != sink.ended->events)) {
+  if (sink.ended) {
+    if (std::string where = endDifference(log, *sink.ended); !where.empty()) {
+      report.identical = false;
+      report.where = std::move(where);
+      return report;
+    }
+  }
+  if (digestsTried) {
+    // Every record matches, yet the digests said otherwise: the index does not fit its chunks.
     report.identical = false;
-    report.where = "the run ends differently: " + (sink.ended->completed ? std::string("completed") : sink.ended->message);
+    report.where = "every record replays identically, but the index's chunk digests do not match them";
     return report;
   }
-  std::vector<std::string> notes;
-  if (sink.headerDiffers) notes.push_back("the header was written by another version (" + log.header.toolkit + ")");
-  if (!log.reader.truncation().empty()) notes.push_back(log.reader.truncation());
-  for (const std::string& n : notes) report.note += (report.note.empty() ? "" : "; ") + n;
+  report.note = notesOf(log, sink.headerDiffers);
   report.events = board->executedTotal();
   return report;
 }
@@ -433,8 +555,8 @@ DecisionStream::~DecisionStream() = default;
 DecisionStream::DecisionStream(DecisionStream&&) noexcept = default;
 std::optional<DecisionView> DecisionStream::next() { return source_->next(); }
 
-ReplayReport replayLog(const OpenedLog& log) {
-  return withLogScalar(log, [&]<class Real>() { return replayAs<Real>(log); });
+ReplayReport replayLog(const OpenedLog& log, ReplayMethod method) {
+  return withLogScalar(log, [&]<class Real>() { return replayAs<Real>(log, method); });
 }
 
 StateView seekLog(const OpenedLog& log, const SeekTarget& target) {

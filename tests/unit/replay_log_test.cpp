@@ -243,10 +243,14 @@ TEST_P(ReplayRoundTrip, RecordThenReplayIsIdentical) {
     EXPECT_GT(log.reader.chunks().size(), 1u) << "the spec example should span several chunks";
   }
 
-  const ReplayReport report = replayLog(log);
-  EXPECT_TRUE(report.identical) << describe(report);
-  EXPECT_EQ(report.note, "");
-  EXPECT_EQ(report.events, result.summary.total);
+  // By digests (a fresh log needs nothing more), and record by record.
+  for (const ReplayMethod method : {ReplayMethod::Digests, ReplayMethod::Records}) {
+    const ReplayReport report = replayLog(log, method);
+    EXPECT_TRUE(report.identical) << describe(report);
+    EXPECT_EQ(report.byDigests, method == ReplayMethod::Digests);
+    EXPECT_EQ(report.note, "");
+    EXPECT_EQ(report.events, result.summary.total);
+  }
 
   std::uint64_t executed = 0;
   DecisionStream stream(log);
@@ -312,6 +316,7 @@ TEST(ReplayLog, ReplayFindsTheFirstDecisionThatDiffers) {
   const ReplayReport report = replayLog(log);
   SCOPED_TRACE(describe(report));
   EXPECT_FALSE(report.identical);
+  EXPECT_FALSE(report.byDigests) << "a differing chunk is compared record by record";
   EXPECT_NE(report.where, "");
   EXPECT_TRUE(contains(report.where, "decision")) << report.where;
   ASSERT_TRUE(report.logDecision.has_value());
@@ -329,6 +334,37 @@ TEST(ReplayLog, ReplayFindsTheFirstDecisionThatDiffers) {
   ASSERT_TRUE(report.runState.has_value());
   // Everything before the difference was compared and matched.
   EXPECT_EQ(report.decisions, report.logDecision->index);
+}
+
+// An index whose first chunk digest was changed, framed again with a correct checksum: the run
+// matches every record, but not the digest. Replay must not call the log identical.
+TEST(ReplayLog, ReplaySaysWhenTheIndexDigestsDoNotMatchTheRecords) {
+  const Recorded& rec = specExample(5.0);
+  const OpenedLog original = openBytes(rec.bytes);
+  ASSERT_TRUE(original.reader.chunks().front().digest.has_value());
+  Bytes tampered = rec.bytes;
+  const std::size_t indexAt = static_cast<std::size_t>(readU64(tampered, tampered.size() - kTrailerSize));
+  const std::size_t payloadAt = indexAt + kFrameHeaderSize;
+  const std::size_t length = readU32(tampered, indexAt + 1);
+  ByteReader r(std::span<const std::uint8_t>(tampered.data() + payloadAt, length));
+  r.varint();  // chunks
+  r.varint();  // the first chunk's offset, events and ticks
+  r.varint();
+  r.varint();
+  r.u64();     // its time
+  const std::size_t digestAt = payloadAt + r.position();
+  putU64(tampered, digestAt, readU64(tampered, digestAt) ^ 1);
+  const std::span<const std::uint8_t> payload(tampered.data() + payloadAt, length);
+  putU64(tampered, payloadAt + length, checksum64(payload, (std::uint64_t(FrameType::Index) << 32) | length));
+
+  const OpenedLog log = openBytes(tampered);  // every checksum holds
+  EXPECT_EQ(*log.reader.chunks().front().digest, *original.reader.chunks().front().digest ^ 1);
+  const ReplayReport report = replayLog(log);
+  EXPECT_FALSE(report.identical);
+  EXPECT_FALSE(report.byDigests);
+  EXPECT_PRED2(contains, report.where, "digests do not match");
+  // Record by record, the log replays identically: its records are the run's.
+  EXPECT_TRUE(replayLog(log, ReplayMethod::Records).identical);
 }
 
 // --- corruption ----------------------------------------------------------------------------------------
@@ -449,8 +485,9 @@ TEST(ReplayLog, DamagedRecordsNeverCrashTheDecoder) {
         } catch (const std::exception&) {
           ++rejected;
         }
-        // Replaying compares the chunks and explains the first that differs by decoding it.
-        const ReplayReport report = replayLog(bad);
+        // Replaying record by record compares the chunks and explains the first that differs by
+        // decoding it. (By digests, damage to records is the checksums' to catch: they are off here.)
+        const ReplayReport report = replayLog(bad, ReplayMethod::Records);
         if (report.identical) ++replayedIdentical;
       } catch (const std::exception&) {
         ++replayRejected;
@@ -491,7 +528,8 @@ Bytes handMadeLog(const Bytes& model, const Bytes& records) {
   index.varint(chunkAt);
   index.varint(0);
   index.varint(0);
-  index.u64(0);
+  index.u64(0);  // time
+  index.u64(0);  // digest
   index.u8(1);
   index.varint(0);
   index.u64(0);
@@ -648,10 +686,16 @@ TEST(ReplayLog, BadFilesSayWhatIsWrong) {
   }
   {
     Bytes b = good;
-    b[8] = 2;  // u16 format version, little-endian
+    b[8] = 3;  // u16 format version, little-endian
     b[9] = 0;
     const std::string message = openedMessage(b);
-    EXPECT_TRUE(contains(message, "version 2 is newer")) << message;
+    EXPECT_TRUE(contains(message, "version 3 is newer")) << message;
+  }
+  {
+    Bytes b = good;
+    b[8] = 1;  // the version before chunk digests
+    const std::string message = openedMessage(b);
+    EXPECT_TRUE(contains(message, "version 1 is older than this build reads (2); record the run again")) << message;
   }
   {
     Bytes b = good;

@@ -1,5 +1,6 @@
 #pragma once
 // The checksum that guards every part of the replay log.
+#include <bit>
 #include <cstdint>
 #include <span>
 
@@ -26,5 +27,18 @@ namespace gizmo::replay {
 // only in word k give the same h before word k, different values of h XOR w at word k, and from
 // there on the same sequence of bijections, hence different results.
 std::uint64_t checksum64(std::span<const std::uint8_t> data, std::uint64_t seed = 0);
+
+// Its steps, for digests that mix words as they come (decision_digest.hpp): the start, one word
+// mixed in, and the finish given the length.
+inline constexpr std::uint64_t kChecksumStart = 0x9E3779B97F4A7C15ULL;
+inline std::uint64_t mixChecksumWord(std::uint64_t h, std::uint64_t w) {
+  return std::rotl(h ^ w, 31) * 0x9FB21C651E98DF25ULL;
+}
+inline std::uint64_t finishChecksum(std::uint64_t h, std::uint64_t length) {
+  h ^= length;
+  h ^= h >> 32;
+  h *= 0xD6E8FEB86659FD93ULL;
+  return h ^ (h >> 32);
+}
 
 }  // namespace gizmo::replay

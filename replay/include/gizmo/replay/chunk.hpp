@@ -28,24 +28,44 @@ struct OpenedChunk {
   std::size_t recordsAt = 0;  // where the records start in the payload
 };
 
-// Reads a chunk's preamble and keyframe, checking the keyframe against its hash.
-template <class Real>
-OpenedChunk<Real> openChunk(std::span<const std::uint8_t> payload) {
-  OpenedChunk<Real> c;
+// A chunk's preamble and its keyframe's bytes (empty in the first chunk), checked against the
+// keyframe's hash but not decoded.
+struct ChunkStart {
+  ChunkPreamble preamble;
+  std::span<const std::uint8_t> keyframe;
+  std::size_t keyframeAt = 0;  // where the keyframe's length is in the payload
+  std::uint64_t keyframeHash = 0;
+  std::size_t recordsAt = 0;  // where the records start in the payload
+};
+inline ChunkStart readChunkStart(std::span<const std::uint8_t> payload) {
+  ChunkStart c;
   ByteReader r(payload);
   r.span(readPreamble(payload, c.preamble));
   if (c.preamble.hasKeyframe) {
-    const std::size_t at = r.position();
+    c.keyframeAt = r.position();
     const std::uint64_t n = r.varint();
-    if (n > r.remaining()) throw FormatError("keyframe longer than its chunk", at);
-    const std::span<const std::uint8_t> bytes = r.span(static_cast<std::size_t>(n));
+    if (n > r.remaining()) throw FormatError("keyframe longer than its chunk", c.keyframeAt);
+    c.keyframe = r.span(static_cast<std::size_t>(n));
     c.keyframeHash = r.u64();
-    if (stateHash(bytes) != c.keyframeHash) throw FormatError("keyframe does not match its hash", at);
-    ByteReader s(bytes);
-    c.keyframe = readState<Real>(s);
-    if (!s.atEnd()) throw FormatError("keyframe: bytes after the state", at + s.position());
+    if (stateHash(c.keyframe) != c.keyframeHash) throw FormatError("keyframe does not match its hash", c.keyframeAt);
   }
   c.recordsAt = r.position();
+  return c;
+}
+
+// Reads a chunk's preamble and keyframe, checking the keyframe against its hash.
+template <class Real>
+OpenedChunk<Real> openChunk(std::span<const std::uint8_t> payload) {
+  const ChunkStart start = readChunkStart(payload);
+  OpenedChunk<Real> c;
+  c.preamble = start.preamble;
+  c.keyframeHash = start.keyframeHash;
+  c.recordsAt = start.recordsAt;
+  if (c.preamble.hasKeyframe) {
+    ByteReader s(start.keyframe);
+    c.keyframe = readState<Real>(s);
+    if (!s.atEnd()) throw FormatError("keyframe: bytes after the state", start.keyframeAt + s.position());
+  }
   return c;
 }
 

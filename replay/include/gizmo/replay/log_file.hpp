@@ -18,6 +18,9 @@ struct ChunkEntry {
   std::uint64_t eventsDone = 0;  // events executed before the chunk
   std::uint64_t ticksDone = 0;   // ticks completed before the chunk
   double time = 0;               // the keyframe's board time, rounded to a double
+  // The digest of the chunk's decisions (decision_digest.hpp), from the index; absent for a chunk
+  // found by walking the frames of a log without its index.
+  std::optional<std::uint64_t> digest;
 };
 
 // How the recorded run ended.
@@ -51,7 +54,7 @@ void writePreamble(std::vector<std::uint8_t>& out, const ChunkPreamble& p);
 std::size_t readPreamble(std::span<const std::uint8_t> payload, ChunkPreamble& p);
 // The index entry of a chunk at `offset` with this preamble.
 inline ChunkEntry entryOf(const ChunkPreamble& p, std::uint64_t offset) {
-  return ChunkEntry{offset, p.eventsDone, p.ticksDone, p.time};
+  return ChunkEntry{offset, p.eventsDone, p.ticksDone, p.time, std::nullopt};
 }
 
 // Writes frames to a file as they come; each chunk reaches the operating system before the next

@@ -1,12 +1,13 @@
 #pragma once
 // The observer that turns a run into chunks (architecture.md, seam 2): every report of the
-// board becomes a record; at the first tick boundary after a chunk is full, the board's state
-// is saved as the next chunk's keyframe.
+// board becomes a record and enters the chunk's digest; at the first tick boundary after a chunk
+// is full, the board's state is saved as the next chunk's keyframe.
 #include <algorithm>
 #include <utility>
 
 #include "gizmo/core/board/game_board.hpp"
 #include "gizmo/replay/chunk.hpp"
+#include "gizmo/replay/decision_digest.hpp"
 
 namespace gizmo::replay {
 
@@ -19,34 +20,42 @@ class Recorder final : public BoardObserver<Real> {
 
   void eventScheduled(const Event<Real>& e) override {
     if (next_) beginNext();
+    digest_.scheduled(e);
     encoder_.scheduled(e);
   }
   void eventRemoved(const Event<Real>& e) override {
     if (next_) beginNext();
+    digest_.removed(e);
     encoder_.removed(e);
   }
   void eventExecuted(const Event<Real>& e, const EventOutcome<Real>& o) override {
     if (next_) beginNext();
+    digest_.executed(e, o);
     encoder_.executed(e, o);
   }
   void triggerFired(const Real& t, GizmoId s, GizmoId g) override {
     if (next_) beginNext();
+    digest_.trigger(t, s, g);
     encoder_.trigger(t, s, g);
   }
   void actionPerformed(const Real& t, GizmoId g) override {
     if (next_) beginNext();
+    digest_.action(t, g);
     encoder_.action(t, g);
   }
   void inputApplied(const Real& t, int key, KeyDirection d) override {
     if (next_) beginNext();
+    digest_.input(t, key, d);
     encoder_.input(t, key, d);
   }
   void modelRuleApplied(const Real& t, ModelRule r, GizmoId g, GizmoId o) override {
     if (next_) beginNext();
+    digest_.rule(t, r, g, o);
     encoder_.rule(t, r, g, o);
   }
   void tickBoundary(const Real& t) override {
     if (next_) beginNext();
+    digest_.tick(t);
     encoder_.tick(t);
     ++ticks_;
     if (chunk_.size() >= limit_) {
@@ -89,10 +98,12 @@ class Recorder final : public BoardObserver<Real> {
     }
     limit_ = std::max(kChunkTargetBytes, 8 * keyframeBytes);
     entry_ = entryOf(p, 0);
+    digest_.reset();
   }
 
   void close() {
     encoder_.flush();
+    entry_.digest = digest_.value();
     sink_.chunk(chunk_.bytes(), entry_);
   }
 
@@ -100,6 +111,7 @@ class Recorder final : public BoardObserver<Real> {
   const GameBoard<Real>& board_;
   ByteWriter chunk_;
   RecordEncoder<Real> encoder_;
+  DecisionDigest<Real> digest_;  // of the chunk's reports, for the index
   std::vector<std::uint8_t> preamble_;
   ChunkEntry entry_;
   std::size_t limit_ = kChunkTargetBytes;

@@ -92,6 +92,7 @@ struct StateView {
 };
 struct ReplayReport {
   bool identical = true;
+  bool byDigests = false;  // identity was established from the chunks' digests and keyframes
   std::uint64_t decisions = 0;  // compared
   std::uint64_t events = 0;
   std::string note;  // e.g. the log was cut off and only its prefix was compared
@@ -100,7 +101,14 @@ struct ReplayReport {
   std::string where;  // what differs, in words
   std::optional<StateView> logState, runState;
 };
-ReplayReport replayLog(const OpenedLog& log);
+// How a replay compares the run with the log. By digests: the run is made again without encoding,
+// and each chunk's decisions are checked against the chunk's digest in the index and each
+// keyframe against the run's state; only when something differs (or the log has no index) is the
+// run encoded and compared record by record, which finds the first differing decision. Records:
+// always record by record.
+enum class ReplayMethod : std::uint8_t { Digests, Records };
+
+ReplayReport replayLog(const OpenedLog& log, ReplayMethod method = ReplayMethod::Digests);
 
 // The state after `events` events (or at board time `time`), reached from the nearest keyframe.
 struct SeekTarget {
