@@ -76,11 +76,17 @@ PhysicsParams<Real> paramsOf(const OpenedLog& log) {
 
 // --- recording -----------------------------------------------------------------------------------
 
+// The header frame's payload for a run of `request` on `board`.
+template <class Real>
+std::vector<std::uint8_t> headerBytes(const RunRequest& request, const PrecisionChoice& precision,
+                                      const GameBoard<Real>& board) {
+  return encodeHeader(headerFor(request, precisionName(precision), scalarName<Real>(), paramBytes(board.params())));
+}
+
 template <class Real>
 RecordResult recordAs(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink) {
   std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(request);
-  const LogHeader header = headerFor(request, precisionName(precision), scalarName<Real>(), paramBytes(board->params()));
-  sink.header(encodeHeader(header));
+  sink.header(headerBytes(request, precision, *board));
   Recorder<Real> recorder(sink, *board);
   board->setObserver(&recorder);
   RecordResult result;
@@ -216,10 +222,7 @@ class ComparingSink final : public ChunkSink {
   struct LogEnds {};  // the log was cut off and everything it holds matched
 
   explicit ComparingSink(const LogReader& log) : log_(log) {}
-  void header(std::span<const std::uint8_t> payload) override {
-    if (!std::equal(payload.begin(), payload.end(), log_.headerPayload().begin(), log_.headerPayload().end()))
-      headerDiffers = true;
-  }
+  void header(std::span<const std::uint8_t>) override {}  // compared before the run (replayAs)
   void chunk(std::span<const std::uint8_t> payload, const ChunkEntry& entry) override {
     const std::size_t i = chunks++;
     if (i >= log_.chunks().size()) {
@@ -238,7 +241,6 @@ class ComparingSink final : public ChunkSink {
   }
   void finish(const RunEnd& end) override { ended = end; }
 
-  bool headerDiffers = false;
   std::size_t chunks = 0;
   std::uint64_t eventsInLog = 0;  // when the log ends first
   std::vector<std::uint8_t> ours;
@@ -418,7 +420,8 @@ std::string notesOf(const OpenedLog& log, bool headerDiffers) {
 
 // A replay by digests on a board prepared for the log's run, or nullopt when something differs.
 template <class Real>
-std::optional<ReplayReport> replayByDigests(const OpenedLog& log, std::unique_ptr<GameBoard<Real>> board) {
+std::optional<ReplayReport> replayByDigests(const OpenedLog& log, std::unique_ptr<GameBoard<Real>> board,
+                                            bool headerDiffers) {
   RunEnd run;
   try {
     DigestChecker<Real> checker(log.reader, *board);
@@ -439,7 +442,7 @@ std::optional<ReplayReport> replayByDigests(const OpenedLog& log, std::unique_pt
   ReplayReport report;
   report.byDigests = true;
   report.events = run.events;
-  report.note = notesOf(log, false);
+  report.note = notesOf(log, headerDiffers);
   return report;
 }
 
@@ -460,9 +463,11 @@ ReplayReport replayAs(const OpenedLog& log, ReplayMethod method) {
     report.where = "this build derives different simulation parameters from the log's board";
     return report;
   }
+  // The header this build would write for the run (its toolkit version, its canonical board).
+  const bool headerDiffers = !std::ranges::equal(headerBytes(log.request, log.precision, *board), log.reader.headerPayload());
   const bool digestsTried = method == ReplayMethod::Digests && hasDigests(log);
   if (digestsTried) {
-    if (std::optional<ReplayReport> r = replayByDigests<Real>(log, std::move(board))) return *r;
+    if (std::optional<ReplayReport> r = replayByDigests<Real>(log, std::move(board), headerDiffers)) return *r;
     board = prepareRun<Real>(log.request);
   }
   ComparingSink sink(log.reader);
@@ -506,7 +511,7 @@ ReplayReport replayAs(const OpenedLog& log, ReplayMethod method) {
     report.where = "every record replays identically, but the index's chunk digests do not match them";
     return report;
   }
-  report.note = notesOf(log, sink.headerDiffers);
+  report.note = notesOf(log, headerDiffers);
   report.events = board->executedTotal();
   return report;
 }

@@ -336,6 +336,30 @@ TEST(ReplayLog, ReplayFindsTheFirstDecisionThatDiffers) {
   EXPECT_EQ(report.decisions, report.logDecision->index);
 }
 
+// A log whose header names another toolkit version (same length, framed again with a correct
+// checksum) replays identically, by either method, with a note saying so.
+TEST(ReplayLog, AHeaderFromAnotherVersionIsNoted) {
+  const Recorded& rec = specExample(5.0);
+  const OpenedLog original = openBytes(rec.bytes);
+  LogHeader h = decodeHeader(original.reader.headerPayload());
+  ASSERT_FALSE(h.toolkit.empty());
+  h.toolkit = std::string(h.toolkit.size(), '9');
+  const Bytes payload = encodeHeader(h);
+  ASSERT_EQ(payload.size(), original.reader.headerPayload().size());
+  Bytes tampered = rec.bytes;
+  const std::size_t at = kFileHeaderSize + kFrameHeaderSize;
+  std::copy(payload.begin(), payload.end(), tampered.begin() + std::ptrdiff_t(at));
+  putU64(tampered, at + payload.size(), checksum64(payload, (std::uint64_t(FrameType::Header) << 32) | payload.size()));
+
+  const OpenedLog log = openBytes(tampered);
+  for (const ReplayMethod method : {ReplayMethod::Digests, ReplayMethod::Records}) {
+    const ReplayReport report = replayLog(log, method);
+    EXPECT_TRUE(report.identical) << describe(report);
+    EXPECT_PRED2(contains, report.note, "written by another version (" + h.toolkit + ")");
+  }
+  EXPECT_EQ(replayLog(original).note, "");
+}
+
 // An index whose first chunk digest was changed, framed again with a correct checksum: the run
 // matches every record, but not the digest. Replay must not call the log identical.
 TEST(ReplayLog, ReplaySaysWhenTheIndexDigestsDoNotMatchTheRecords) {
