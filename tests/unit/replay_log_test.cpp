@@ -132,6 +132,14 @@ void putU32(Bytes& b, std::size_t at, std::uint32_t v) {
   for (std::size_t i = 0; i < 4; ++i) b.at(at + i) = static_cast<std::uint8_t>(v >> (8 * i));
 }
 
+// Recomputes the checksum of the frame at `frameAt` over its payload as it now is, as the writer
+// of an edited log would.
+void resealFrame(Bytes& b, std::size_t frameAt) {
+  const std::uint32_t length = readU32(b, frameAt + 1);
+  const std::span<const std::uint8_t> payload(b.data() + frameAt + kFrameHeaderSize, length);
+  putU64(b, frameAt + kFrameHeaderSize + length, checksum64(payload, (std::uint64_t(b.at(frameAt)) << 32) | length));
+}
+
 // The end of the header frame (where the first chunk starts) and the index frame's offset, read
 // from the bytes as docs/replay-format.md lays them out.
 std::uint64_t headerFrameEnd(const Bytes& b) {
@@ -305,10 +313,8 @@ TEST(ReplayLog, ReplayFindsTheFirstDecisionThatDiffers) {
   const Bytes payload = encodeHeader(h);
   ASSERT_EQ(payload.size(), original.reader.headerPayload().size()) << "a key's time is a fixed 8 bytes";
   Bytes tampered = rec.bytes;
-  const std::size_t at = kFileHeaderSize + kFrameHeaderSize;
-  std::copy(payload.begin(), payload.end(), tampered.begin() + std::ptrdiff_t(at));
-  const std::uint64_t seed = (std::uint64_t(FrameType::Header) << 32) | payload.size();
-  putU64(tampered, at + payload.size(), checksum64(payload, seed));
+  std::copy(payload.begin(), payload.end(), tampered.begin() + std::ptrdiff_t(kFileHeaderSize + kFrameHeaderSize));
+  resealFrame(tampered, kFileHeaderSize);
 
   const OpenedLog log = openBytes(tampered);  // every checksum holds
   ASSERT_EQ(log.request.keys.size(), original.request.keys.size());
@@ -347,9 +353,8 @@ TEST(ReplayLog, AHeaderFromAnotherVersionIsNoted) {
   const Bytes payload = encodeHeader(h);
   ASSERT_EQ(payload.size(), original.reader.headerPayload().size());
   Bytes tampered = rec.bytes;
-  const std::size_t at = kFileHeaderSize + kFrameHeaderSize;
-  std::copy(payload.begin(), payload.end(), tampered.begin() + std::ptrdiff_t(at));
-  putU64(tampered, at + payload.size(), checksum64(payload, (std::uint64_t(FrameType::Header) << 32) | payload.size()));
+  std::copy(payload.begin(), payload.end(), tampered.begin() + std::ptrdiff_t(kFileHeaderSize + kFrameHeaderSize));
+  resealFrame(tampered, kFileHeaderSize);
 
   const OpenedLog log = openBytes(tampered);
   for (const ReplayMethod method : {ReplayMethod::Digests, ReplayMethod::Records}) {
@@ -378,8 +383,7 @@ TEST(ReplayLog, ReplaySaysWhenTheIndexDigestsDoNotMatchTheRecords) {
   r.u64();     // its time
   const std::size_t digestAt = payloadAt + r.position();
   putU64(tampered, digestAt, readU64(tampered, digestAt) ^ 1);
-  const std::span<const std::uint8_t> payload(tampered.data() + payloadAt, length);
-  putU64(tampered, payloadAt + length, checksum64(payload, (std::uint64_t(FrameType::Index) << 32) | length));
+  resealFrame(tampered, indexAt);
 
   const OpenedLog log = openBytes(tampered);  // every checksum holds
   EXPECT_EQ(*log.reader.chunks().front().digest, *original.reader.chunks().front().digest ^ 1);
