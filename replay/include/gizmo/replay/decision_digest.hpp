@@ -4,7 +4,7 @@
 // again from a re-simulation that encodes nothing, and compares chunk by chunk. Only a chunk
 // whose digest differs is encoded and compared record by record (docs/replay-format.md, "Chunk
 // digests", defines the words mixed for each report).
-#include <bit>
+#include <algorithm>
 #include <cstdint>
 
 #include "gizmo/core/board/observer.hpp"
@@ -93,11 +93,8 @@ class DecisionDigest {
   }
   template <class Bytes>
   void bytes(const Bytes& b) {
-    for (std::size_t at = 0; at < b.size(); at += 8) {
-      std::uint64_t w = 0;
-      for (std::size_t i = at; i < b.size() && i < at + 8; ++i) w |= std::uint64_t(b[i]) << (8 * (i - at));
-      mix(w);
-    }
+    for (std::size_t at = 0; at < b.size(); at += 8)
+      mix(detail::loadLittleEndian(b.data() + at, std::min<std::size_t>(8, b.size() - at)));
   }
 
   std::uint64_t h_ = kChecksumStart;
