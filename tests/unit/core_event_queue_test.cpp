@@ -1,0 +1,95 @@
+// The event queue against a plain model of it: whatever is pushed, removed and popped, and in
+// whatever order, each pop is the earliest live event by runsBefore. Times come from a handful
+// of values so that ties on time, kind and first gizmo are common, as at a friction instant of
+// a board of many balls.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "gizmo/core/board/event_queue.hpp"
+
+namespace gizmo {
+namespace {
+
+// A fixed-seed generator, so that a failure is the same on every run.
+struct Lcg {
+  std::uint64_t state;
+  std::uint32_t below(std::uint32_t n) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<std::uint32_t>((state >> 33) % n);
+  }
+};
+
+Event<double> someEvent(Lcg& rng) {
+  Event<double> e;
+  e.time = 0.25 * double(rng.below(6));
+  e.kind = static_cast<EventKind>(rng.below(kEventKindCount));
+  e.a = static_cast<GizmoId>(rng.below(12)) - 1;
+  e.b = static_cast<GizmoId>(rng.below(12)) - 1;
+  e.feature = static_cast<std::int32_t>(rng.below(3)) - 1;
+  return e;
+}
+
+bool involves(const Event<double>& e, GizmoId g) { return e.a == g || e.b == g; }
+
+void checkAgainstModel(std::uint64_t seed, int steps) {
+  SCOPED_TRACE(::testing::Message() << "seed " << seed);
+  Lcg rng{seed};
+  EventQueue<double> queue;
+  std::vector<Event<double>> live;  // the model: every live event, with its sequence number
+  for (int step = 0; step < steps; ++step) {
+    const std::uint32_t op = rng.below(10);
+    if (op < 5 || live.empty()) {
+      Event<double> e = someEvent(rng);
+      e.sequence = queue.push(e);
+      live.push_back(e);
+    } else if (op < 8) {
+      const auto earliest = std::min_element(live.begin(), live.end(), runsBefore<double>);
+      const Event<double> popped = queue.pop();
+      ASSERT_EQ(popped.sequence, earliest->sequence) << "at step " << step;
+      live.erase(earliest);
+    } else {
+      const GizmoId g = static_cast<GizmoId>(rng.below(11));
+      std::vector<std::uint64_t> removed;
+      queue.removeInvolving(g, [&](const Event<double>& e) { removed.push_back(e.sequence); });
+      std::vector<std::uint64_t> expected;
+      for (const Event<double>& e : live)
+        if (involves(e, g)) expected.push_back(e.sequence);
+      ASSERT_EQ(removed, expected) << "at step " << step;  // in scheduling order
+      std::erase_if(live, [&](const Event<double>& e) { return involves(e, g); });
+    }
+    ASSERT_EQ(queue.size(), live.size());
+  }
+  while (!live.empty()) {
+    const auto earliest = std::min_element(live.begin(), live.end(), runsBefore<double>);
+    ASSERT_EQ(queue.pop().sequence, earliest->sequence);
+    live.erase(earliest);
+  }
+  EXPECT_TRUE(queue.empty());
+}
+
+TEST(EventQueue, PopsTheEarliestLiveEventThroughPushesRemovalsAndPops) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) checkAgainstModel(seed, 3000);
+}
+
+TEST(EventQueue, ManyEventsAtOneInstantComeOutInTieOrder) {
+  // A hundred friction ticks at one instant, pushed in a scrambled order, leave by ball id.
+  EventQueue<double> queue;
+  Lcg rng{7};
+  std::vector<GizmoId> ids(100);
+  for (GizmoId i = 0; i < 100; ++i) ids[std::size_t(i)] = i;
+  for (std::size_t i = ids.size(); i > 1; --i) std::swap(ids[i - 1], ids[rng.below(std::uint32_t(i))]);
+  for (GizmoId id : ids) {
+    Event<double> e;
+    e.time = 0.01;
+    e.kind = EventKind::FrictionTick;
+    e.a = id;
+    queue.push(e);
+  }
+  for (GizmoId expected = 0; expected < 100; ++expected) EXPECT_EQ(queue.pop().a, expected);
+}
+
+}  // namespace
+}  // namespace gizmo
