@@ -69,9 +69,12 @@ std::optional<Real> segmentTimeOfImpact(const Trajectory<Real>& t, const Real& r
   const Real half = Real(1) / Real(2);
   const std::array<Real, 5> c{height - r, dot(t.v, s.normal), half * dot(t.a, s.normal), Real(0), Real(0)};
   // Cheap rejection: the gap cannot close within the limit (it only grows, or it is wider than
-  // the most the motion can close: |c1| limit + |c2| limit²).
-  if (Real(0) < c[0] && Real(0) <= c[1] && Real(0) <= c[2]) return std::nullopt;
-  if (absOf(c[1]) * limit + absOf(c[2]) * limit * limit < c[0]) return std::nullopt;
+  // the most the motion can close: |c1| limit + |c2| limit²). Both tests are evaluated and
+  // joined without branches: most segments of a shape are rejected, so the one branch left is
+  // predictable, where one per comparison was not.
+  const bool opening = bool(Real(0) < c[0]) & bool(Real(0) <= c[1]) & bool(Real(0) <= c[2]);
+  const bool outOfReach = absOf(c[1]) * limit + absOf(c[2]) * limit * limit < c[0];
+  if (opening | outOfReach) return std::nullopt;
   // The contact point must lie on the segment; at either end it must also be moving onto it
   // (a ball leaving over an end meets that end's vertex instead, not the edge again).
   auto onSegment = [&](const Real& tau) {

@@ -82,10 +82,15 @@ inline Real absOf(const Real& x) {
   return abs(x);
 }
 
+// By value for the hardware floats, so that the compiler selects with minsd/maxsd rather than a
+// branch on a comparison that is often a coin toss; by reference for the library types, whose
+// copies cost. Either way the same operand is chosen.
 template <class Real>
-inline const Real& minOf(const Real& a, const Real& b) { return b < a ? b : a; }
+using ChosenOf = std::conditional_t<std::is_floating_point_v<Real>, Real, const Real&>;
 template <class Real>
-inline const Real& maxOf(const Real& a, const Real& b) { return a < b ? b : a; }
+inline ChosenOf<Real> minOf(const Real& a, const Real& b) { return b < a ? b : a; }
+template <class Real>
+inline ChosenOf<Real> maxOf(const Real& a, const Real& b) { return a < b ? b : a; }
 
 // The unit roundoff of the type (for MPFR: of the current default precision).
 template <class Real>
