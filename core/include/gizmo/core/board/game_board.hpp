@@ -12,6 +12,7 @@
 
 #include "gizmo/core/board/board_state.hpp"
 #include "gizmo/core/board/event_queue.hpp"
+#include "gizmo/core/board/id_set.hpp"
 #include "gizmo/core/board/observer.hpp"
 #include "gizmo/core/board/physics_params.hpp"
 #include "gizmo/core/gizmos/abstract_gizmo.hpp"
@@ -133,6 +134,7 @@ class GameBoard final : private BoardAccess<Real> {
   void tickUntil(const Real& end);
   void advanceTo(const Real& t);
   void execute(const Event<Real>& e);
+  void applyEvent(const Event<Real>& e);
   void fireTriggersOf(GizmoId source);
   void performAction(GizmoId target);
   void recomputePending();
@@ -191,6 +193,7 @@ class GameBoard final : private BoardAccess<Real> {
   std::vector<GizmoId> recompute_;
   std::vector<GizmoId> recomputing_;  // recomputePending's working list, kept for its capacity
   std::vector<GizmoId> candidates_;
+  IdSet candidateSet_;                 // gathers candidates_ in id order, without repeats
   std::array<std::uint64_t, kEventKindCount> executed_{};
   std::uint64_t executedTotal_ = 0;
   RunLimit limit_;
