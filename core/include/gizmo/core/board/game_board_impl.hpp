@@ -484,7 +484,8 @@ Real GameBoard<Real>::frictionTickTime(Ball<Real>& b) const {
 }
 
 // Broad phase: fixed gizmos in the grid cells the ball's swept box covers whose bounds overlap
-// it, the walls when the box reaches an edge, and the balls whose boxes overlap it. Ordered by id so that scheduling order is deterministic.
+// it, the walls when the box reaches an edge, and the balls whose boxes overlap it. Ordered by
+// id so that scheduling order is deterministic.
 template <class Real>
 void GameBoard<Real>::gatherCandidates(GizmoId ballId, std::vector<GizmoId>& out) {
   out.clear();
