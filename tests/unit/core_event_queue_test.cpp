@@ -1,7 +1,8 @@
 // The event queue against a plain model of it: whatever is pushed, removed and popped, and in
 // whatever order, each pop is the earliest live event by runsBefore. Times come from a handful
 // of values so that ties on time, kind and first gizmo are common, as at a friction instant of
-// a board of many balls.
+// a board of many balls. Friction ticks take the queue's lane rather than its heap, so a second
+// mix is mostly ticks, of ids across several words of the lane's bit sets.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,9 +29,22 @@ Event<double> someEvent(std::mt19937_64& rng) {
   return e;
 }
 
+// Mostly friction ticks of gizmos 0 … 199 at four instants, one gizmo with a second tick
+// now and then (which the lane cannot hold), and other kinds among them.
+Event<double> mostlyTick(std::mt19937_64& rng) {
+  Event<double> e;
+  e.time = 0.01 * double(1 + below(rng, 4));
+  e.kind = below(rng, 8) == 0 ? EventKind::Collision : EventKind::FrictionTick;
+  e.a = static_cast<GizmoId>(below(rng, 200));
+  e.b = e.kind == EventKind::Collision ? static_cast<GizmoId>(below(rng, 200)) : kNoGizmo;
+  return e;
+}
+
 bool involves(const Event<double>& e, GizmoId g) { return e.a == g || e.b == g; }
 
-void checkAgainstModel(std::uint64_t seed, int steps) {
+using MakeEvent = Event<double> (*)(std::mt19937_64&);
+
+void checkAgainstModel(std::uint64_t seed, int steps, MakeEvent makeEvent, std::uint32_t gizmos) {
   SCOPED_TRACE(::testing::Message() << "seed " << seed);
   std::mt19937_64 rng(seed);
   EventQueue<double> queue;
@@ -38,7 +52,7 @@ void checkAgainstModel(std::uint64_t seed, int steps) {
   for (int step = 0; step < steps; ++step) {
     const std::uint32_t op = below(rng, 10);
     if (op < 5 || live.empty()) {
-      Event<double> e = someEvent(rng);
+      Event<double> e = makeEvent(rng);
       e.sequence = queue.push(e);
       live.push_back(e);
     } else if (op < 8) {
@@ -47,7 +61,7 @@ void checkAgainstModel(std::uint64_t seed, int steps) {
       ASSERT_EQ(popped.sequence, earliest->sequence) << "at step " << step;
       live.erase(earliest);
     } else {
-      const GizmoId g = static_cast<GizmoId>(below(rng, 11));
+      const GizmoId g = static_cast<GizmoId>(below(rng, gizmos));
       std::vector<std::uint64_t> removed;
       queue.removeInvolving(g, [&](const Event<double>& e) { removed.push_back(e.sequence); });
       std::vector<std::uint64_t> expected;
@@ -67,7 +81,11 @@ void checkAgainstModel(std::uint64_t seed, int steps) {
 }
 
 TEST(EventQueue, PopsTheEarliestLiveEventThroughPushesRemovalsAndPops) {
-  for (std::uint64_t seed = 1; seed <= 20; ++seed) checkAgainstModel(seed, 3000);
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) checkAgainstModel(seed, 3000, someEvent, 11);
+}
+
+TEST(EventQueue, KeepsTieOrderWithFrictionTicksOfManyGizmosAtSeveralInstants) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) checkAgainstModel(seed, 5000, mostlyTick, 200);
 }
 
 TEST(EventQueue, ManyEventsAtOneInstantComeOutInTieOrder) {

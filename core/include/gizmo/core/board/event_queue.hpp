@@ -7,11 +7,15 @@
 // The heap holds each event's time and its first tie-breakers (kind, then a) beside its slot:
 // sifting compares neighbouring heap entries without visiting the slots, which on a board with
 // many events lie far apart in memory. Only events alike in all three are compared in full.
+//
+// Beside a large heap, friction ticks go to a lane of their own (instant_lane.hpp); a pop takes
+// the earlier of the heap's top and the lane's front.
 #include <algorithm>
 #include <cstdint>
 #include <vector>
 
 #include "gizmo/core/board/event.hpp"
+#include "gizmo/core/board/instant_lane.hpp"
 
 namespace gizmo {
 
@@ -37,8 +41,14 @@ class EventQueue {
     ++aliveCount_;
     track(stored.a, slot, s.serial);
     if (stored.b != stored.a) track(stored.b, slot, s.serial);
-    heap_.push_back(HeapEntry{stored.time, orderKey(stored), slot});
-    siftUp(heap_.size() - 1);
+    // A heap of a few events is cheaper than the lane's bookkeeping of instants, so ticks start
+    // a lane only beside a large heap, and join one that has started.
+    const bool laneWorthIt = !lane_.empty() || heap_.size() >= kLaneFrom;
+    s.inLane = stored.kind == EventKind::FrictionTick && laneWorthIt && lane_.add(stored.time, stored.a, slot);
+    if (!s.inLane) {
+      heap_.push_back(HeapEntry{stored.time, orderKey(stored.kind, stored.a), slot});
+      siftUp(heap_.size() - 1);
+    }
     return stored.sequence;
   }
 
@@ -46,18 +56,17 @@ class EventQueue {
   std::size_t size() const { return aliveCount_; }
 
   // The earliest live event; the queue must not be empty.
-  const Event<Real>& top() {
-    dropDeadTop();
-    return events_[heap_.front().slot];
-  }
+  const Event<Real>& top() { return events_[frontSlot()]; }
 
   Event<Real> pop() {
-    dropDeadTop();
-    const std::uint32_t slot = heap_.front().slot;
+    const std::uint32_t slot = frontSlot();
+    if (states_[slot].inLane)
+      lane_.popFront();
+    else
+      removeTop();
     Event<Real> e = std::move(events_[slot]);
     states_[slot].alive = false;
     --aliveCount_;
-    removeTop();
     freeSlots_.push_back(slot);
     return e;
   }
@@ -70,15 +79,22 @@ class EventQueue {
     std::vector<Handle>& list = byGizmo_[static_cast<std::size_t>(g)];
     for (const Handle& h : list) {
       if (!holds(h)) continue;
-      states_[h.slot].alive = false;
+      SlotState& s = states_[h.slot];
+      const Event<Real>& e = events_[h.slot];
+      s.alive = false;
       --aliveCount_;
-      ++deadInHeap_;
-      onRemoved(events_[h.slot]);
+      if (s.inLane) {
+        lane_.remove(e.time, e.a);
+        freeSlots_.push_back(h.slot);
+      } else {
+        ++deadInHeap_;
+      }
+      onRemoved(e);
     }
     list.clear();
     // Dead events wait in the heap until they reach the top; when they outnumber the live ones,
-    // sweep them out so the heap stays about as small as the queue.
-    if (deadInHeap_ > aliveCount_ + 64) compact();
+    // sweep them out so the heap stays about as small as its share of the queue.
+    if (deadInHeap_ > aliveCount_ - lane_.size() + 64) compact();
   }
 
   // Every live event, earliest first (for inspection and tests; O(n log n)).
@@ -117,6 +133,7 @@ class EventQueue {
     heap_.clear();
     freeSlots_.clear();
     byGizmo_.clear();
+    lane_.clear();
     aliveCount_ = 0;
     deadInHeap_ = 0;
   }
@@ -127,6 +144,7 @@ class EventQueue {
   struct SlotState {
     std::uint32_t serial = 0;
     bool alive = false;
+    bool inLane = false;  // queued in lane_ rather than heap_
   };
   struct Handle {
     std::uint32_t slot;
@@ -155,19 +173,36 @@ class EventQueue {
     std::uint64_t order;  // orderKey of the event
     std::uint32_t slot;
   };
+  // The heap size from which friction ticks start a lane: a pop from it descends three levels.
+  static constexpr std::size_t kLaneFrom = 32;
+
   // runsBefore's kind, then a, in one number (a >= -1).
-  static std::uint64_t orderKey(const Event<Real>& e) {
-    return std::uint64_t(e.kind) << 32 | std::uint32_t(e.a + 1);
-  }
+  static std::uint64_t orderKey(EventKind kind, GizmoId a) { return std::uint64_t(kind) << 32 | std::uint32_t(a + 1); }
   // runsBefore, with the full comparison only for events alike in time, kind and a. The common
   // outcomes are computed without branches: which of two entries comes first is a coin toss
   // that a branch predictor loses half the time, at every level of every sift.
   bool before(const HeapEntry& x, const HeapEntry& y) const {
-    const bool earlier = x.time < y.time, later = y.time < x.time;
+    return before(x.time, x.order, x.slot, y.time, y.order, y.slot);
+  }
+  bool before(const Real& xTime, std::uint64_t xOrder, std::uint32_t xSlot, const Real& yTime, std::uint64_t yOrder,
+              std::uint32_t ySlot) const {
+    const bool earlier = xTime < yTime, later = yTime < xTime;
     const bool tie = !(earlier | later);
-    if (tie & (x.order == y.order)) [[unlikely]]
-      return runsBefore(events_[x.slot], events_[y.slot]);
-    return earlier | (tie & (x.order < y.order));
+    if (tie & (xOrder == yOrder)) [[unlikely]]
+      return runsBefore(events_[xSlot], events_[ySlot]);
+    return earlier | (tie & (xOrder < yOrder));
+  }
+
+  // The slot of the earliest live event, the heap's top or the lane's front.
+  std::uint32_t frontSlot() {
+    dropDeadTop();
+    if (lane_.empty()) return heap_.front().slot;
+    const typename InstantLane<Real>::Front lane = lane_.front();
+    if (heap_.empty()) return lane.slot;
+    const HeapEntry& top = heap_.front();
+    const bool laneFirst =
+        before(lane.time, orderKey(EventKind::FrictionTick, lane.id), lane.slot, top.time, top.order, top.slot);
+    return laneFirst ? lane.slot : top.slot;
   }
 
   // A 4-ary heap: half the levels of a binary one, and a node's children share cache lines, so a
@@ -231,7 +266,7 @@ class EventQueue {
     siftUp(hole);
   }
   void dropDeadTop() {
-    while (!states_[heap_.front().slot].alive) {
+    while (!heap_.empty() && !states_[heap_.front().slot].alive) {
       freeSlots_.push_back(heap_.front().slot);
       removeTop();
       --deadInHeap_;
@@ -258,6 +293,7 @@ class EventQueue {
   std::vector<HeapEntry> heap_;
   std::vector<std::uint32_t> freeSlots_;
   std::vector<std::vector<Handle>> byGizmo_;
+  InstantLane<Real> lane_;
   std::size_t aliveCount_ = 0;
   std::size_t deadInHeap_ = 0;
   std::uint64_t nextSequence_ = 0;
