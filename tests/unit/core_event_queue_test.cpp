@@ -1,8 +1,8 @@
 // The event queue against a plain model of it: whatever is pushed, removed and popped, and in
 // whatever order, each pop is the earliest live event by runsBefore. Times come from a handful
 // of values so that ties on time, kind and first gizmo are common, as at a friction instant of
-// a board of many balls. Friction ticks take the queue's lane rather than its heap, so a second
-// mix is mostly ticks, of ids across several words of the lane's bit sets.
+// a board of many balls. Beside a heap of 32 entries or more, friction ticks take the queue's
+// lane, so a second mix is mostly ticks, of ids across several words of the lane's bit sets.
 #include <gtest/gtest.h>
 
 #include <algorithm>
