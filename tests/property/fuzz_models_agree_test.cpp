@@ -53,6 +53,29 @@ TEST(ModelsAgreeComparison, ExclusiveDecisionsWithinTheTimeToleranceAreANearTie)
   EXPECT_FALSE(compareModelDecisions(classic, apart).holds);
 }
 
+// Campaign seed 20261121, case 140: a ball reaches an absorber's underside and a flipper's side at
+// one instant. Classic strikes it off the flipper and then captures it 8e-16 s later; ballistic
+// captures it at once, so the flipper hit never happens (the two models do the same at mpfr:256:
+// the instant is a tie that every precision breaks by rounding).
+TEST(ModelsAgreeComparison, AHitThatAReorderedNearTieRulesOutIsANearTie) {
+  const std::vector<PhysicalDecision> classic{hit("collision a=2 b=5", 0.5, 1.9), hit("collision a=1 b=5", 0.5 + 8e-16, 0)};
+  const std::vector<PhysicalDecision> ballistic{hit("collision a=1 b=5", 0.5 + 2e-16, 0)};
+  EXPECT_TRUE(compareModelDecisions(classic, ballistic).holds);
+  EXPECT_TRUE(compareModelDecisions(ballistic, classic).holds);
+  // The same extra hit, but not where the two runs' order parted: a disagreement.
+  const std::vector<PhysicalDecision> inOrder{hit("collision a=1 b=5", 0.5, 0), hit("collision a=2 b=5", 0.5 + 8e-16, 1.9)};
+  EXPECT_FALSE(compareModelDecisions(inOrder, ballistic).holds);
+  // And a hit missing long after a reordered pair still counts.
+  std::vector<PhysicalDecision> later = classic;
+  later.push_back(hit("collision a=3 b=5", 0.9, 2));
+  std::vector<PhysicalDecision> laterBallistic = ballistic;
+  EXPECT_TRUE(compareModelDecisions(later, laterBallistic).holds);  // parted at the near-tie first
+  std::vector<PhysicalDecision> swapped{hit("collision a=4 b=6", 0.3 + 1e-14, 1), hit("collision a=7 b=8", 0.3, 1),
+                                        hit("collision a=3 b=5", 0.9, 2)};
+  const std::vector<PhysicalDecision> swappedShort{swapped[1], swapped[0]};
+  EXPECT_FALSE(compareModelDecisions(swapped, swappedShort).holds);
+}
+
 TEST(ModelsAgreeComparison, TheSameEventPartedInTimeIsRoundingAmplified) {
   const std::vector<PhysicalDecision> classic{hit("collision a=1 b=9", 0.5, -2)};
   const std::vector<PhysicalDecision> ballistic{hit("collision a=1 b=9", 0.5 + 3e-9, -2)};

@@ -148,6 +148,28 @@ TEST(TimeOfImpact, SegmentMissesBeyondItsEndsAndFromBehind) {
   EXPECT_EQ(*now, 0.0);
 }
 
+// A ball thrown up beside a bumper starts behind the line of the bumper's top edge, and gravity
+// brings it down onto that edge from above: the gap rises through zero beside the bumper (not an
+// entry), then falls to zero over the edge. Found by the no-tunnelling property (campaign seed
+// 20261201, case 359): the edge was never looked at from behind its line, so the ball sank into
+// a flipper's top side until the next recalculation found it there.
+TEST(TimeOfImpact, AnArcFromBehindAnEdgesLineLandsOnTheEdge) {
+  const SegmentFeature<double> top = makeSegment(Vec2<double>(5, 5), Vec2<double>(6, 5));  // normal (0,−1)
+  const Trajectory<double> arc{{7, 6}, {-2, -10}, {0, 25}};
+  ASSERT_LT(dot(arc.p - top.a, top.normal), 0.0);
+  const auto tau = segmentTimeOfImpact(arc, 0.25, top, 1.0);
+  ASSERT_TRUE(tau);
+  // 4.75 = 6 − 10τ + 12.5τ², the later root; the contact point is then over the edge.
+  EXPECT_NEAR(*tau, (10 + std::sqrt(37.5)) / 25, 1e-14);
+  const double x = arc.positionAt(*tau).x;
+  EXPECT_TRUE(5 <= x && x <= 6);
+  // The same arc cut short before it comes down, and a path that falls away behind the line
+  // (never over it), meet nothing; neither is a contact now, though the gap is negative.
+  EXPECT_FALSE(segmentTimeOfImpact(arc, 0.25, top, 0.6));
+  EXPECT_FALSE(segmentTimeOfImpact(Trajectory<double>{{5.5, 8}, {0, 1}, {0, 25}}, 0.25, top, 1.0));
+  EXPECT_FALSE(segmentTimeOfImpact(Trajectory<double>{{5.5, 5.5}, {0, -1}, {0, 25}}, 0.25, top, 1.0));
+}
+
 // docs/physics.md, sliding ends: a ball closer to a segment's end than the position resolution
 // (4ε(|x| + |y|), 8.7e-15 L here) and moving out over it has left the segment: it cannot get any
 // nearer by moving, and hitting the edge again would begin a contact that ends at once, for ever.

@@ -152,6 +152,29 @@ TEST(CertifyWrong, NearTieOfTwoWallsIsFlaggedAndMpfrHitsTheFloorFirst) {
   EXPECT_EQ(m->feature, 1);  // mpfr:256: the floor
 }
 
+// A ball thrown up beside a flipper lands on its top side from above, though its centre started
+// behind that side's line (docs/physics.md, "Edges seen from behind their line"). The certifier
+// looks at such an edge as the core does, so the landing is a certified decision, and no earlier
+// rival is missed.
+TEST(CertifyRun, ALandingOnAnEdgeFromBehindItsLineIsCertified) {
+  RunRequest request;
+  request.board.gravity = 1000;
+  request.board.mu = request.board.mu2 = 0;
+  request.board.balls.push_back(BallSpec{"B", 12.522527032318791, 18.02436634557278, -105.3627631957021,
+                                         -72.25506501591016, {}});
+  request.board.gizmos.push_back(GizmoSpec{GizmoType::LeftFlipper, "F", 1, 16, 90, 2, 2, {}});
+  request.maxTick = 0.2;
+  request.duration = 0.12;
+  const std::optional<Event<double>> d = firstCollision<double>(request);
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->feature, 1);  // the flipper's top side, at rest
+  EXPECT_NEAR(d->time, 0.0982, 1e-4);
+  const CertifyReport r = certifyRun(request);
+  expectAccounted(r);
+  EXPECT_TRUE(r.allCertified()) << describe(r);
+  EXPECT_TRUE(r.wrong.empty()) << describe(r);
+}
+
 // Before the graze rule (docs/physics.md, "Grazes") double predicted a hit on this corner that
 // the true path never makes, and the certifier flagged it. Now double passes the corner as
 // mpfr:256 does, and the certifier proves the pass right.

@@ -202,9 +202,12 @@ class Decider {
       const EventKey key{EventKind::Collision, g, ball.id, feature};
       const bool own = sameEvent(key, executed_);
       if (!skipped(feature) && !(skipOwn && own)) {
-        const Vec2<I> d = m.p - s.a;
-        // A centre certainly behind the edge's line is not looked at, as in segmentTimeOfImpact.
-        if (!certainlyNegative(dot(d, s.normal))) f(segmentGap(m, s, r, key));
+        Gap<I> gap = segmentGap(m, s, r, key);
+        // A centre certainly behind the edge's line reaches the edge only if gravity bends its
+        // path back over the line (segmentTimeOfImpact): a gap that is concave and rising.
+        gap.fromBehind = certainlyNegative(dot(Vec2<I>(m.p - s.a), s.normal));
+        const bool bendsBack = !certainlyNotAfter(I(0.0), gap.g.c[2]) && !certainlyNotAfter(gap.g.c[1], I(0.0));
+        if (!gap.fromBehind || bendsBack) f(gap);
       }
       ++feature;
     }

@@ -76,6 +76,10 @@ struct Gap {
   I length;
   // Round features and ball pairs: the path relative to the centre, for the graze rule.
   std::optional<Motion<I>> round;
+  // An edge whose line has the ball's centre behind it: only an entry from a positive gap, after
+  // gravity bends the path back over the line, counts; never a contact at the start
+  // (segmentTimeOfImpact).
+  bool fromBehind = false;
 };
 
 template <class I>
@@ -359,7 +363,7 @@ SearchResult<I> firstEntry(const Gap<I>& gap, const I& end, const SearchLimits& 
   if (gap.g.degree == 0) return result;  // constant: never crosses
   const I zero(0.0);
   const std::optional<SearchResult<I>> decided =
-      decidedAtStart(closingAtStart(gap.g), contactSide(gap, zero), end);
+      gap.fromBehind ? std::nullopt : decidedAtStart(closingAtStart(gap.g), contactSide(gap, zero), end);
   // A quadratic that opens upwards with no two real roots is never negative, so it has no entry
   // anywhere: that settles exact tangencies (a straight pass at exactly the touching distance,
   // where the discriminant is exactly 0), which no subdivision can.

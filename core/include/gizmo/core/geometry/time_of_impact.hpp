@@ -65,9 +65,16 @@ std::optional<Real> segmentTimeOfImpact(const Trajectory<Real>& t, const Real& r
                                         const Real& limit) {
   const Vec2<Real> d = t.p - s.a;
   const Real height = dot(d, s.normal);
-  if (height < Real(0)) return std::nullopt;  // centre behind the line: inside the gizmo
   const Real half = Real(1) / Real(2);
   const std::array<Real, 5> c{height - r, dot(t.v, s.normal), half * dot(t.a, s.normal), Real(0), Real(0)};
+  // A centre behind the line is on the gizmo's side of this edge. A path can still come to the
+  // edge from its free side if gravity bends it back over the line beyond an end of the edge (a
+  // ball thrown up beside a bumper lands on its top): the gap, concave, first rises above zero
+  // and then falls to it. Only such an entry counts, never a contact at the present: the ball is
+  // not touching this edge, whatever the sign of the gap says.
+  const bool behind = height < Real(0);
+  if (behind && !(Real(0) < c[1] && c[2] < Real(0) && Real(0) < Real(Real(4) * -c[2] * c[0] + c[1] * c[1])))
+    return std::nullopt;
   // Cheap rejection: the gap cannot close within the limit (it only grows, or it is wider than
   // the most the motion can close: |c1| limit + |c2| limit²). Both tests are evaluated and
   // joined without branches: most segments of a shape are rejected, so the one branch left is
@@ -83,6 +90,7 @@ std::optional<Real> segmentTimeOfImpact(const Trajectory<Real>& t, const Real& r
     if (u < Real(0) || s.length < u) return false;
     return !leavingOverEnd(s, u, dot(t.velocityAt(tau), s.direction), dot(t.a, s.direction), positionResolution(p));
   };
+  if (behind) return math::firstEntry(c, Real(0), limit, onSegment);
   return firstPolynomialEntry(c, limit, onSegment);
 }
 
