@@ -99,6 +99,12 @@ int fuzzCommand(const FuzzOptions& o) {
   std::vector<const fz::Property*> properties;
   if (!chooseProperties(o.property, properties)) return kExitBadInput;
   if (!o.check.empty()) return checkOne(o, properties);
+  if (o.boardTimeGiven) {
+    // Before --budget had its name, a campaign's --time was seconds of wall time: say so rather
+    // than run a campaign that ignores it.
+    std::cerr << "gizmo fuzz: --time is seconds of board time, for --check; a campaign's wall-time limit is --budget\n";
+    return kExitBadInput;
+  }
 
   fz::CampaignOptions c;
   c.properties = properties;
@@ -112,7 +118,7 @@ int fuzzCommand(const FuzzOptions& o) {
     return kExitBadInput;
   }
   if (!(o.wallSeconds >= 0)) {
-    std::cerr << "gizmo fuzz: --time must be a number of seconds, 0 or more\n";
+    std::cerr << "gizmo fuzz: --budget must be a number of seconds, 0 or more\n";
     return kExitBadInput;
   }
   // The wall-clock budget belongs here, not in the library: it is the one thing that makes a

@@ -17,11 +17,12 @@ struct FuzzOptions {
   unsigned jobs = 1;
   std::string shard;        // "K/N"; empty: the whole campaign
   std::string out;          // results folder; empty: failures are only printed
-  double wallSeconds = 0;   // --time: stop starting cases after this long (0: no limit)
+  double wallSeconds = 0;   // --budget: stop starting cases after this long (0: no limit)
   std::size_t shrinkBudget = 100;
   std::vector<std::string> merge;  // --merge DIR...: merge these results folders
   std::string check;        // --check BOARD: check one run instead of generating
-  RunOptions run;           // --keys, --model, --max-tick, --duration for --check
+  RunOptions run;           // --keys, --model, --max-tick, --time for --check
+  bool boardTimeGiven = false;  // --time was given (it belongs to --check)
 };
 int fuzzCommand(const FuzzOptions& options);
 // The property names, comma-separated, for the help text.

@@ -125,19 +125,31 @@ int main(int argc, char** argv) {
   fuzzCmd->add_option("--jobs", fuzz.jobs, "Threads")->capture_default_str();
   fuzzCmd->add_option("--shard", fuzz.shard, "K/N: only the cases k with k % N == K (one task of a job array)");
   fuzzCmd->add_option("--out", fuzz.out, "Folder for results.txt and one folder per failure");
-  fuzzCmd->add_option("--time", fuzz.wallSeconds, "Stop starting new cases after this many seconds of wall time");
+  fuzzCmd->add_option("--budget", fuzz.wallSeconds,
+                      "Stop starting new cases after this many seconds of wall time (the one option that makes a\n"
+                      "campaign's result depend on the machine; the summary then says 'stopped early')");
   fuzzCmd->add_option("--shrink-budget", fuzz.shrinkBudget, "Property checks spent shrinking one failure")
       ->capture_default_str();
   CLI::Option* fuzzMerge = fuzzCmd->add_option("--merge", fuzz.merge, "Merge the --out folders of a campaign's shards");
   CLI::Option* fuzzCheck = fuzzCmd->add_option("--check", fuzz.check, "Check the properties on this board instead");
-  fuzzCmd->add_option("--keys", fuzz.run.keys, "With --check: key script");
-  fuzzCmd->add_option("--model", fuzz.run.model, "With --check: ballistic or classic")->capture_default_str();
-  fuzzCmd->add_option("--max-tick", fuzz.run.maxTick, "With --check: maximum tick length, seconds")->capture_default_str();
-  fuzzCmd->add_option("--duration", fuzz.run.time, "With --check: seconds of board time")->capture_default_str();
+  // --time is seconds of board time here as in run, record and verify: the --check run's length.
+  CLI::Option* fuzzTime = fuzzCmd->add_option("--time", fuzz.run.time, "With --check: seconds of board time to simulate")
+                              ->capture_default_str();
+  CLI::Option* fuzzKeys = fuzzCmd->add_option("--keys", fuzz.run.keys, "With --check: key script");
+  CLI::Option* fuzzModel = fuzzCmd->add_option("--model", fuzz.run.model, "With --check: ballistic or classic")->capture_default_str();
+  CLI::Option* fuzzMaxTick =
+      fuzzCmd->add_option("--max-tick", fuzz.run.maxTick, "With --check: maximum tick length, seconds")->capture_default_str();
+  for (CLI::Option* checkOnly : {fuzzKeys, fuzzModel, fuzzMaxTick}) checkOnly->needs(fuzzCheck);
   fuzzMerge->excludes(fuzzCheck);
-  for (const char* campaignOnly : {"--count", "--seed", "--jobs", "--shard", "--out", "--time", "--property"})
+  for (const char* campaignOnly : {"--count", "--seed", "--jobs", "--shard", "--out", "--budget", "--shrink-budget"}) {
     fuzzMerge->excludes(fuzzCmd->get_option(campaignOnly));
-  fuzzCmd->callback([&] { code = fuzzCommand(fuzz); });
+    fuzzCheck->excludes(fuzzCmd->get_option(campaignOnly));
+  }
+  fuzzMerge->excludes(fuzzCmd->get_option("--property"));
+  fuzzCmd->callback([&] {
+    fuzz.boardTimeGiven = fuzzTime->count() > 0;
+    code = fuzzCommand(fuzz);
+  });
 
   StudyOptions study;
   CLI::App* studyCmd = app.add_subcommand(

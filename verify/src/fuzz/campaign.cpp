@@ -188,7 +188,7 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
                                   quoted((folder / "board.xml").string()) + " --keys " +
                                   quoted((folder / "keys.txt").string()) + " --model " +
                                   std::string(motionModelName(c.minimal.model)) + " --max-tick " +
-                                  shortest(c.minimal.maxTick) + " --duration " + shortest(c.minimal.duration);
+                                  shortest(c.minimal.maxTick) + " --time " + shortest(c.minimal.duration);
       writeFile(folder / "command.txt", command + "\n");
       writeFile(folder / "failure.txt", "property " + c.property + ", case " + std::to_string(c.index) + " (seed " +
                                             hex(c.seed) + ", size " + std::to_string(c.size) + "), shrunk in " +
