@@ -86,6 +86,11 @@ int mergeResults(const FuzzOptions& o) {
     return kExitBadInput;
   }
   std::cout << "fuzz: " << fz::summaryLine(merged) << '\n';
+  // A shard that stopped early (its task's --budget ran out) is named, not only counted.
+  for (const auto& [dir, part] : parts)
+    if (!part.complete)
+      std::cout << "INCOMPLETE " << dir << ": " << fz::casesChecked(part) << " of " << fz::casesPlanned(part)
+                << " cases ran (stopped early)\n";
   printFailures(merged);
   return fz::failureCount(merged) == 0 ? kExitOk : kExitCheckFailed;
 }

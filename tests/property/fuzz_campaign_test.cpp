@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/verify/fuzz/campaign.hpp"
@@ -59,6 +60,45 @@ TEST(FuzzCampaign, MergedShardsEqualOneRun) {
   // A shard missing, or one given twice, is refused.
   EXPECT_THROW(mergeCampaigns({parts[0], parts[1]}), CampaignError);
   EXPECT_THROW(mergeCampaigns({parts[0], parts[1], parts[2], parts[1]}), CampaignError);
+  std::filesystem::remove_all(dir);
+}
+
+// What a killed or timed-out task leaves must not merge as if whole: a results file cut short at
+// a line's end is refused, and a shard stopped early reads back as incomplete, with its counts.
+TEST(FuzzCampaign, ResultsCutShortOrStoppedEarlyAreNotWhole) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gizmo-fuzz-cut-test";
+  std::filesystem::remove_all(dir);
+  CampaignOptions o = smallCampaign();
+  o.shard = 1, o.shards = 2;
+  CampaignResult whole = runCampaign(o);
+  writeCampaign(whole, dir.string(), "gizmo");
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.txt.partial"));
+  const CampaignResult back = readCampaign(dir.string());
+  EXPECT_TRUE(back.complete);
+  EXPECT_EQ(casesChecked(back), 6u);
+  EXPECT_EQ(casesPlanned(back), 6u);
+
+  std::string text;
+  {
+    std::ifstream in(dir / "results.txt");
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  const std::size_t lastLine = text.rfind('\n', text.size() - 2);
+  {
+    std::ofstream out(dir / "results.txt");
+    out << text.substr(0, lastLine + 1);  // one check fewer, every line whole
+  }
+  EXPECT_THROW(readCampaign(dir.string()), CampaignError);
+
+  o.stop = [] { return true; };
+  CampaignResult stopped = runCampaign(o);
+  EXPECT_FALSE(stopped.complete);
+  writeCampaign(stopped, dir.string(), "gizmo");
+  const CampaignResult early = readCampaign(dir.string());
+  EXPECT_FALSE(early.complete);
+  EXPECT_EQ(casesChecked(early), 0u);
+  EXPECT_EQ(casesPlanned(early), 6u);
+  EXPECT_NE(summaryLine(early).find("(stopped early)"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
 

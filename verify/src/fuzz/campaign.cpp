@@ -8,6 +8,7 @@
 #include <fstream>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -140,14 +141,27 @@ std::uint64_t failureCount(const CampaignResult& r) {
   return std::uint64_t(std::count_if(r.outcomes.begin(), r.outcomes.end(), [](const CaseOutcome& c) { return !c.holds; }));
 }
 
+std::uint64_t casesChecked(const CampaignResult& r) {
+  std::uint64_t cases = 0, last = ~std::uint64_t{0};
+  for (const CaseOutcome& c : r.outcomes)
+    if (c.index != last) ++cases, last = c.index;
+  return cases;
+}
+
+std::uint64_t casesPlanned(const CampaignResult& r) {
+  std::uint64_t cases = 0;
+  for (std::uint64_t s : r.shardsIncluded)
+    if (s < r.count) cases += (r.count - s + r.shards - 1) / r.shards;  // k = s, s + shards, … below count
+  return cases;
+}
+
 std::string summaryLine(const CampaignResult& r) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
   auto mix = [&](std::uint64_t x) {
     for (int i = 0; i < 8; ++i) h = (h ^ ((x >> (8 * i)) & 0xff)) * 0x100000001b3ULL;
   };
-  std::uint64_t cases = 0, last = ~std::uint64_t{0};
+  const std::uint64_t cases = casesChecked(r);
   for (const CaseOutcome& c : r.outcomes) {
-    if (c.index != last) ++cases, last = c.index;
     mix(c.index);
     for (char ch : c.property) mix(std::uint64_t(static_cast<unsigned char>(ch)));
     mix(c.holds);
@@ -198,7 +212,12 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
     results << "case " << c.index << ' ' << hex(c.seed) << ' ' << c.size << ' ' << c.property << ' '
             << (c.holds ? "holds" : "fails") << ' ' << hex(c.fingerprint) << ' ' << (c.holds ? "-" : c.folder) << "\n";
   }
-  writeFile(fs::path(dir) / kResultsFile, results.str());
+  // Written aside and renamed into place, so that a task killed while writing leaves no
+  // results.txt (the merge then names the folder) rather than one cut short.
+  const fs::path final = fs::path(dir) / kResultsFile, partial = fs::path(dir) / (std::string(kResultsFile) + ".partial");
+  writeFile(partial, results.str());
+  fs::rename(partial, final, ec);
+  if (ec) throw CampaignError("cannot write " + final.string() + ": " + ec.message());
 }
 
 CampaignResult readCampaign(const std::string& dir) {
@@ -229,6 +248,7 @@ CampaignResult readCampaign(const std::string& dir) {
   r.count = number(header("count"));
   r.properties = header("properties");
   r.shards = number(header("shards"));
+  if (r.shards == 0) throw bad("shards must be 1 or more");
   {
     std::istringstream s(header("shard"));
     for (std::string w; s >> w;) r.shardsIncluded.push_back(number(w));
@@ -250,7 +270,21 @@ CampaignResult readCampaign(const std::string& dir) {
     c.holds = holds == "holds";
     c.fingerprint = number(fingerprint, 16);
     if (c.holds) c.folder.clear();
+    if (c.index >= r.count || std::find(r.shardsIncluded.begin(), r.shardsIncluded.end(), c.index % r.shards) ==
+                                  r.shardsIncluded.end())
+      throw bad("case " + index + " is not a case of this file's shards");
     r.outcomes.push_back(std::move(c));
+  }
+  if (r.complete) {
+    // Every check of every case of its shards, once each.
+    std::set<std::pair<std::uint64_t, std::string>> seen;
+    for (const CaseOutcome& c : r.outcomes) seen.emplace(c.index, c.property);
+    const std::uint64_t properties = std::uint64_t(std::count(r.properties.begin(), r.properties.end(), ',')) + 1;
+    const std::uint64_t expected = casesPlanned(r) * properties;
+    if (seen.size() != r.outcomes.size() || seen.size() != expected)
+      throw CampaignError(path.string() + ": says complete but holds " + std::to_string(r.outcomes.size()) + " checks (" +
+                          std::to_string(seen.size()) + " different) of the " + std::to_string(expected) +
+                          " its shards have: cut short or edited");
   }
   return r;
 }

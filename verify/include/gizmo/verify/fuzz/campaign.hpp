@@ -64,6 +64,10 @@ RunRequest caseRun(std::uint64_t campaignSeed, std::uint64_t index);
 CampaignResult runCampaign(const CampaignOptions& options);
 
 std::uint64_t failureCount(const CampaignResult& r);
+// How many cases the result holds (each checked against every property), and how many its shards
+// have: fewer when it stopped early.
+std::uint64_t casesChecked(const CampaignResult& r);
+std::uint64_t casesPlanned(const CampaignResult& r);
 // "seed 7, cases 0..39 of 40, 6 properties: 240 checks, 0 failures, digest 0123456789abcdef": the
 // same line for a run and for the merge of its shards.
 std::string summaryLine(const CampaignResult& r);
@@ -73,7 +77,9 @@ std::string summaryLine(const CampaignResult& r);
 // (failure.txt) and the one-line command that checks it again (command.txt). `gizmo` is how the
 // command names the program. Throws CampaignError when dir cannot be written.
 void writeCampaign(CampaignResult& r, const std::string& dir, const std::string& gizmo);
-// Reads what writeCampaign wrote. Throws CampaignError (naming the file and line) when it is not.
+// Reads what writeCampaign wrote. Throws CampaignError (naming the file and line) when it is not,
+// and when a result that says it is complete lacks a check of its shards or holds one twice, or
+// holds a case of another shard: a file cut short or edited, never merged as if whole.
 CampaignResult readCampaign(const std::string& dir);
 // One result from the shards of one campaign: same seed, count, properties and shard count, no
 // shard twice, every shard present. Throws CampaignError otherwise. Folders keep their place
