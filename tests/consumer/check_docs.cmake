@@ -1,9 +1,13 @@
 # docs/library.md shows this folder's files: after each line `<!-- file: PATH -->` comes a fenced
 # code block that must be the file at PATH (from the repository root), exactly. So the example in
-# the documentation is the one the consumer test builds and runs.
-#   cmake -DSOURCE_DIR=repository -P check_docs.cmake
+# the documentation is the one the consumer test builds and runs. DOC names another page that
+# shows files the same way (docs/fuzzing.md shows the Slurm script that tests/slurm submits).
+#   cmake -DSOURCE_DIR=repository [-DDOC=docs/PAGE.md] -P check_docs.cmake
 cmake_minimum_required(VERSION 3.25)
-set(doc_path ${SOURCE_DIR}/docs/library.md)
+if(NOT DOC)
+  set(DOC docs/library.md)
+endif()
+set(doc_path ${SOURCE_DIR}/${DOC})
 file(READ ${doc_path} doc)
 set(checked 0)
 while(TRUE)
