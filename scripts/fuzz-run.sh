@@ -6,7 +6,7 @@
 # after the other, SECONDS each; default 30). Configures build/fuzz with clang (RelWithDebInfo, ASan+UBSan on
 # the fuzz targets), builds them, and runs each over a temporary copy of its seed corpus from
 # fixtures/, which stays unchanged. Inputs that crash, leak or hang (-timeout: 20 s, 10 s for the
-# simulator, whose inputs take milliseconds) are kept in
+# simulator, whose inputs take milliseconds; it also gets tests/fuzz/simulation.dict) are kept in
 # build/fuzz/fuzz-artifacts/. libFuzzer's seed is 1 unless FUZZ_SEED says otherwise (FUZZ_SEED=0:
 # libFuzzer picks one and prints it).
 #   --ci  for .ci/run: without clang, say so and skip instead of installing it; no set-up step.
@@ -78,9 +78,9 @@ trap 'rm -rf "$corpus"' EXIT
 for target in "${targets[@]}"; do
   rm -rf "${corpus:?}"/*
   fill_corpus "$target" "$corpus"
-  timeout=20
-  [ "$target" = simulation ] && timeout=10
+  timeout=20 dict=()
+  [ "$target" = simulation ] && timeout=10 dict=(-dict=tests/fuzz/simulation.dict)
   echo "fuzz-run: $target for ${seconds}s, seed $seed, $(ls "$corpus" | wc -l) seed inputs, crashes to $artifacts/" >&2
   build/fuzz/tests/fuzz/"$target"_fuzz -seed="$seed" -max_total_time="$seconds" -timeout="$timeout" -rss_limit_mb=2048 \
-    -detect_leaks=1 -artifact_prefix="$artifacts/$target-" "$@" "$corpus"
+    -detect_leaks=1 -artifact_prefix="$artifacts/$target-" "${dict[@]}" "$@" "$corpus"
 done
