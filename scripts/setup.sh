@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages that gizmo builds and tests with, when any is missing.
+# Installs the Debian 12 packages that gizmo builds and tests with, when any is missing; or, given
+# package names, those instead (tests/slurm/run.sh: slurm-wlm munge).
 # Non-interactive and idempotent: when everything is present it only checks and returns.
+#   scripts/setup.sh [PACKAGE...]
 set -euo pipefail
 
 packages=(
@@ -11,6 +13,7 @@ packages=(
   librapidcheck-dev libbox2d-dev
   gnuplot-nox
 )
+[ $# -gt 0 ] && packages=("$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -7,15 +7,18 @@
 # run prints. Then a task that fails, one cancelled while it runs and one whose --budget runs out:
 # the merge must refuse the first two (exit 2, naming what is missing) and mark the third.
 # Every daemon it started is stopped on exit, by the pid in its pid file.
-#   tests/slurm/run.sh [BUILD_DIR]   (default build/release; as root; scripts/setup-slurm.sh first)
+#   tests/slurm/run.sh [BUILD_DIR]   (default build/release; as root, through sudo if need be)
+# Installs Debian's slurm-wlm and munge when they are missing (scripts/setup.sh); their own
+# services are not used.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 build=${1:-build/release}
 gizmo=$(realpath "$build/cli/gizmo")
 script=$(realpath scripts/slurm/fuzz-array.sh)
 [ "$(id -u)" -eq 0 ] || exec sudo "$0" "$build"  # root: the cluster's SlurmUser, and munged's start
+scripts/setup.sh slurm-wlm munge
 for program in munged slurmctld slurmd sbatch squeue scontrol scancel sinfo ss; do
-  command -v "$program" >/dev/null || { echo "slurm test: $program is missing (scripts/setup-slurm.sh)" >&2; exit 2; }
+  command -v "$program" >/dev/null || { echo "slurm test: $program is missing" >&2; exit 2; }
 done
 
 # Measured: 17 s of CPU time for the 200 cases, no failure (a failing case would be shrunk, at
