@@ -33,7 +33,9 @@ set(GIZMO_PRECOMPILED_HEADERS
 # above and the extra HEADERs (e.g. <nlohmann/json.hpp>) precompiled. Building a precompiled
 # header costs about as much as compiling four sources' includes (10 to 13 s, and each source
 # then loads its 240 MB), so only targets of several sources that include the heavy headers are
-# given one: gizmo_replay's nine sources, most of them small, compiled no faster with it. TARGET must link Boost and MPFR (gizmo::core does).
+# given one: gizmo_replay's nine sources, most of them small, compiled no faster with it, and
+# the test programs and gizmo_bench slower (their headers with GoogleTest's or Google
+# Benchmark's cost 18 to 26 s to precompile). TARGET must link Boost and MPFR (gizmo::core does).
 #
 # g++ 12 does not keep `#pragma GCC diagnostic` in a precompiled header (GCC PR 64117, fixed in
 # g++ 13), and libstdc++ 12 turns three warnings off that way around std::string's copies, where
