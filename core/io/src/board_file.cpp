@@ -2,6 +2,7 @@
 
 #include "gizmo/io/text_reader.hpp"
 #include "gizmo/io/xml_reader.hpp"
+#include "foreign_format.hpp"
 #include "parse_util.hpp"
 
 namespace gizmo::io {
@@ -11,6 +12,7 @@ static_assert(kMaxBoardFileBytes == detail::kMaxFileBytes);
 ReadResult readBoardString(std::string_view content, const std::string& name) {
   if (content.size() > detail::kMaxFileBytes)
     detail::fail(name, {}, "the file is larger than 16 MiB, the limit for board files");
+  if (const std::optional<std::string> foreign = detail::foreignFormat(content)) detail::fail(name, {}, *foreign);
   detail::rejectNul(content, name);
   std::string_view rest = content;
   if (detail::startsWithBom(rest)) rest.remove_prefix(detail::kBom.size());
