@@ -21,6 +21,16 @@ ReadResult readBoardString(std::string_view content, const std::string& name) {
   return readTextBoard(content, name);
 }
 
+void refuseLeniency(const ReadResult& result) {
+  if (result.warnings.empty()) return;
+  std::vector<Diagnostic> errors = result.warnings;
+  for (Diagnostic& d : errors) {
+    d.error = true;
+    d.message += " (refused: --strict reads a board only as written)";
+  }
+  throw InputError(std::move(errors));
+}
+
 ReadResult readBoardFile(const std::string& path) { return readBoardString(detail::readWholeFile(path), path); }
 
 }  // namespace gizmo::io
