@@ -3,7 +3,7 @@
 # again with a gizmo binary: the valid logs, then the broken ones cut or edited from them.
 # Run it when the log format changes: scripts/make-log-corpus.sh build/release/cli/gizmo
 set -euo pipefail
-gizmo=${1:?usage: $0 GIZMO_BINARY}
+gizmo=$(realpath "${1:?usage: $0 GIZMO_BINARY}")
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$root/fixtures/logs/corpus
 spec=$root/fixtures/boards/spec-example.txt
@@ -23,6 +23,10 @@ record spec-float128-0.1s "$spec" --time 0.1 --precision float128
 record spec-mpfr128-0.1s "$spec" --time 0.1 --precision mpfr:128
 record spec-flipper-keys-1s "$spec" --time 1 --keys "$root/fixtures/keys/flippers.keys"
 record four-balls-meeting-5s "$root/fixtures/boards/scenes/four-balls-meeting.txt" --time 5
+# A board read leniently: the log's header lists its warnings (format 3).
+# (Recorded from the tree's root, so that the warnings name the board by its path in the tree.)
+(cd "$root" && "$gizmo" record fixtures/boards/lenient/spec-example-messy.txt -o "$out/lenient-board-1s.gzlog" \
+   --time 1 > /dev/null 2>&1)
 
 # The broken ones. A log is a 12-byte file header, frames (u8 type, u32 length, payload, u64
 # checksum) and a 16-byte trailer (docs/replay-format.md).
