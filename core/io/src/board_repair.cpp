@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 #include <tuple>
+#include <vector>
 
 #include "gizmo/core/board_spec_check.hpp"
 
@@ -27,10 +28,14 @@ bool gizmoOnBoard(const GizmoSpec& g) {
 // A ball whose centre lies in an absorber's rectangle (edges included) and that is not already a
 // valid captured ball: caught by that absorber, as the programs that allow it do at once.
 void captureBallsInAbsorbers(BoardSpec& board, Reporter& rep) {
+  std::vector<const GizmoSpec*> absorbers;
+  for (const GizmoSpec& g : board.gizmos)
+    if (g.type == GizmoType::Absorber && gizmoOnBoard(g)) absorbers.push_back(&g);
+  if (absorbers.empty()) return;
   for (BallSpec& b : board.balls) {
     if (!finiteBall(b)) continue;
-    for (const GizmoSpec& g : board.gizmos) {
-      if (g.type != GizmoType::Absorber || !gizmoOnBoard(g)) continue;
+    for (const GizmoSpec* a : absorbers) {
+      const GizmoSpec& g = *a;
       const double x0 = g.x, y0 = g.y, x1 = g.x + g.width, y1 = g.y + g.height;
       if (b.x < x0 || b.x > x1 || b.y < y0 || b.y > y1) continue;
       const bool wholly = b.x - kBallRadius >= x0 && b.x + kBallRadius <= x1 && b.y - kBallRadius >= y0 &&
