@@ -7,11 +7,16 @@
 
 namespace gizmo::cli {
 
-LoadedBoard loadBoard(const std::string& path) {
+LoadedBoard loadBoard(const std::string& path, bool strict) {
   const io::ReadResult r = path.empty() ? io::readBoardString(kDefaultBoardText, kDefaultBoardName)
                                         : io::readBoardFile(path);
-  for (const io::Diagnostic& d : r.warnings) std::cerr << io::format(d) << '\n';
-  return LoadedBoard{r.board, path.empty() ? std::string(kDefaultBoardName) : path};
+  if (strict) io::refuseLeniency(r);
+  LoadedBoard out{r.board, path.empty() ? std::string(kDefaultBoardName) : path, {}};
+  for (const io::Diagnostic& d : r.warnings) {
+    out.warnings.push_back(io::format(d));
+    std::cerr << out.warnings.back() << '\n';
+  }
+  return out;
 }
 
 std::vector<TimedKey> loadKeys(const std::string& path) {

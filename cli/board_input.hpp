@@ -20,11 +20,13 @@ inline constexpr int kExitBadInput = 2;
 struct LoadedBoard {
   BoardSpec spec;
   std::string name;  // what to call it in output
+  std::vector<std::string> warnings;  // what the reader read leniently, one io::format line each
 };
 
 // Reads the board at path, or the built-in one when path is empty; prints the reader's
-// warnings to stderr. Throws io::InputError.
-LoadedBoard loadBoard(const std::string& path);
+// warnings to stderr. With strict, a board read leniently is refused instead: its warnings are
+// the errors. Throws io::InputError.
+LoadedBoard loadBoard(const std::string& path, bool strict = false);
 std::vector<TimedKey> loadKeys(const std::string& path);
 
 }  // namespace gizmo::cli

@@ -123,6 +123,7 @@ void printRunsJson(const CheckedRun& run, const CrosscheckCommandOptions& o, con
                      {"wall_seconds", s.wallSeconds}});
   }
   nlohmann::ordered_json out{{"board", run.boardName},
+                             {"warnings", run.boardWarnings},
                              {"model", o.run.model},
                              {"time", o.run.time},
                              {"max_tick", o.run.maxTick},

@@ -173,6 +173,9 @@ bool isKindName(std::string_view kind) {
 std::optional<replay::OpenedLog> openLogFor(const std::string& command, const std::string& path, int& exitCode) {
   try {
     std::optional<replay::OpenedLog> log(replay::openLog(path));
+    // A run of a leniently read board must not pass for a run of the original file.
+    for (const std::string& w : log->header.boardWarnings)
+      std::cerr << "gizmo " << command << ": " << path << ": the board of this run was read leniently: " << w << '\n';
     return log;
   } catch (const std::exception& e) {
     std::cerr << "gizmo " << command << ": " << e.what() << '\n';

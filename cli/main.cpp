@@ -136,6 +136,7 @@ int main(int argc, char** argv) {
   CLI::Option* fuzzTime = fuzzCmd->add_option("--time", fuzz.run.time, "With --check: seconds of board time to simulate")
                               ->capture_default_str();
   CLI::Option* fuzzKeys = fuzzCmd->add_option("--keys", fuzz.run.keys, "With --check: key script");
+  addStrictOption(*fuzzCmd, fuzz.run.strict);
   CLI::Option* fuzzModel = fuzzCmd->add_option("--model", fuzz.run.model, "With --check: ballistic or classic")->capture_default_str();
   CLI::Option* fuzzMaxTick =
       fuzzCmd->add_option("--max-tick", fuzz.run.maxTick, "With --check: maximum tick length, seconds")->capture_default_str();
@@ -174,6 +175,7 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--compare", render.compare,
                         "Player: a second log of the same board, a path file (gizmo crosscheck --path-out) or\n"
                         "box2d:STEP (Box2D run here at that step size), laid over the first");
+  addStrictOption(*renderCmd, render.strict);
   renderCmd->add_option("--trace", render.trace, "Picture: draw this log's ball paths and collision points");
   renderCmd->add_option("--tolerance", render.tolerance,
                         "Leave out ball path pieces that stay this close (L) to the one before (default 1e-3; 0 keeps all)");

@@ -29,7 +29,7 @@ int recordCommand(const RecordOptions& o) {
   std::uint64_t bytes = 0, chunks = 0;
   try {
     replay::LogWriter writer(o.output);
-    result = replay::recordRun(run.request, run.precision, writer);
+    result = replay::recordRun(run.request, run.precision, writer, run.boardWarnings);
     bytes = writer.bytesWritten();
     chunks = writer.chunksWritten();
   } catch (const std::exception& e) {
@@ -42,12 +42,12 @@ int recordCommand(const RecordOptions& o) {
     return kExitCheckFailed;
   }
   if (!o.run.json) {
-    printRunSummary(run.boardName, o.run, result.summary, wall);
+    printRunSummary(run.boardName, run.boardWarnings, o.run, result.summary, wall);
     std::printf("log        %s: %llu bytes in %llu chunks, %.1f bytes per event\n", o.output.c_str(),
                 static_cast<unsigned long long>(bytes), static_cast<unsigned long long>(chunks),
                 result.summary.total ? double(bytes) / double(result.summary.total) : 0.0);
   } else {
-    printRunSummary(run.boardName, o.run, result.summary, wall);
+    printRunSummary(run.boardName, run.boardWarnings, o.run, result.summary, wall);
   }
   return kExitOk;
 }

@@ -177,7 +177,7 @@ int renderPicture(const RenderOptions& o, double tolerance) {
     board = trace->request.board;  // no board given: the traced run's own
   } else {
     try {
-      board = loadBoard(o.input).spec;
+      board = loadBoard(o.input, o.strict).spec;
     } catch (const std::exception& e) {
       return fail(e.what());
     }

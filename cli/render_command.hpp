@@ -12,6 +12,7 @@ struct RenderOptions {
   std::string compare;  // player: a second log of the same board, a path file, or box2d:STEP, laid over the first
   std::string trace;    // picture: a log whose ball paths are drawn
   std::optional<double> tolerance;  // L: ball pieces closer than this to the one before are left out
+  bool strict = false;              // a board file read leniently is refused
 };
 int renderCommand(const RenderOptions& options);
 

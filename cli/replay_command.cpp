@@ -36,7 +36,8 @@ int compare(const replay::OpenedLog& log, const ReplayOptions& o) {
       replay::replayLog(log, o.everyRecord ? replay::ReplayMethod::Records : replay::ReplayMethod::Digests);
   const char* compared = r.byDigests ? "chunk digests and keyframes" : "every record";
   if (o.json) {
-    nlohmann::ordered_json j{{"identical", r.identical}, {"events", r.events}, {"note", r.note}};
+    nlohmann::ordered_json j{{"identical", r.identical}, {"events", r.events}, {"note", r.note},
+                             {"board_warnings", log.header.boardWarnings}};
     if (r.identical) j["compared"] = compared;
     if (!r.identical) {
       j["where"] = r.where;
@@ -54,6 +55,10 @@ int compare(const replay::OpenedLog& log, const ReplayOptions& o) {
                 static_cast<unsigned long long>(r.events), log.header.precision.c_str(),
                 std::string(motionModelName(log.header.model)).c_str(), compared);
     if (!r.note.empty()) std::printf("note: %s\n", r.note.c_str());
+    if (!log.header.boardWarnings.empty())
+      std::printf("note: the board was read leniently (%zu warnings, above): this is a run of the board as read, "
+                  "not of the file as written\n",
+                  log.header.boardWarnings.size());
     return kExitOk;
   }
   std::printf("DIFFERENT: %s\n", r.where.c_str());

@@ -27,7 +27,7 @@ void printHuman(const std::string& board, const RunOptions& o, const RunSummary&
   std::printf("wall       %.6f s\n", wall);
 }
 
-void printJson(const RunOptions& o, const RunSummary& s, double wall) {
+void printJson(const std::vector<std::string>& boardWarnings, const RunOptions& o, const RunSummary& s, double wall) {
   nlohmann::ordered_json events;
   for (int k = 0; k < kEventKindCount; ++k) events[std::string(eventKindName(EventKind(k)))] = s.executed[std::size_t(k)];
   events["total"] = s.total;
@@ -35,7 +35,8 @@ void printJson(const RunOptions& o, const RunSummary& s, double wall) {
   for (const BallState& b : s.balls)
     balls.push_back({{"name", b.name}, {"x", b.x}, {"y", b.y}, {"vx", b.vx}, {"vy", b.vy}, {"captured", b.captured}});
   nlohmann::ordered_json out{{"model", o.model}, {"precision", o.precision}, {"time", s.time}, {"events", events},
-                             {"balls", balls},   {"energy", s.energy},       {"wall_seconds", wall}};
+                             {"balls", balls},   {"energy", s.energy},       {"wall_seconds", wall},
+                             {"warnings", boardWarnings}};
   std::cout << out.dump(2) << '\n';
 }
 
@@ -58,12 +59,13 @@ int runCommand(const RunOptions& o) {
     return kExitCheckFailed;
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  printRunSummary(run.boardName, o, summary, wall);
+  printRunSummary(run.boardName, run.boardWarnings, o, summary, wall);
   return kExitOk;
 }
 
-void printRunSummary(const std::string& board, const RunOptions& o, const RunSummary& s, double wall) {
-  if (o.json) printJson(o, s, wall);
+void printRunSummary(const std::string& board, const std::vector<std::string>& boardWarnings, const RunOptions& o,
+                     const RunSummary& s, double wall) {
+  if (o.json) printJson(boardWarnings, o, s, wall);
   else printHuman(board, o, s, wall);
 }
 

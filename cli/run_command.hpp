@@ -7,6 +7,7 @@ namespace gizmo::cli {
 int runCommand(const RunOptions& options);
 
 // The run's summary as `gizmo run` prints it (also after `gizmo record`).
-void printRunSummary(const std::string& board, const RunOptions& options, const RunSummary& summary, double wall);
+void printRunSummary(const std::string& board, const std::vector<std::string>& boardWarnings, const RunOptions& options,
+                     const RunSummary& summary, double wall);
 
 }  // namespace gizmo::cli

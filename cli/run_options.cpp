@@ -16,6 +16,12 @@ void addRunOptions(CLI::App& command, RunOptions& o, bool withPrecision) {
     command.add_option("--precision", o.precision, std::string("Scalar: ") + kPrecisionNames)->capture_default_str();
   command.add_option("--max-tick", o.maxTick, "Maximum tick length, seconds")->capture_default_str();
   command.add_option("--keys", o.keys, "Key script: one 'TIME down|up KEYCODE' per line");
+  addStrictOption(command, o.strict);
+}
+
+void addStrictOption(CLI::App& command, bool& strict) {
+  command.add_flag("--strict", strict,
+                   "Refuse a board that is not read exactly as written (what would be a warning is an error, exit 2)");
 }
 
 bool checkRun(const RunOptions& o, const std::string& command, CheckedRun& out, int& exitCode) {
@@ -42,9 +48,10 @@ bool checkRun(const RunOptions& o, const std::string& command, CheckedRun& out, 
     return false;
   }
   try {
-    LoadedBoard board = loadBoard(o.board);
+    LoadedBoard board = loadBoard(o.board, o.strict);
     out.request.board = std::move(board.spec);
     out.boardName = board.name;
+    out.boardWarnings = std::move(board.warnings);
     out.request.keys = loadKeys(o.keys);
   } catch (const io::InputError& e) {
     std::cerr << e.what() << '\n';

@@ -2,6 +2,7 @@
 // The options that describe a run (`gizmo run`, `gizmo record`), and their checking: a bad
 // option is reported before anything is simulated or written.
 #include <string>
+#include <vector>
 
 #include "gizmo/core/math/precision.hpp"
 #include "gizmo/core/run/run.hpp"
@@ -20,16 +21,20 @@ struct RunOptions {
   double maxTick = 0.05;
   std::string keys;
   bool json = false;
+  bool strict = false;  // refuse a board that would be read leniently
 };
 
 // Adds the run options (board, --time, --model, --precision, --max-tick, --keys) to a subcommand;
 // without --precision for a command that chooses its own scalars.
 void addRunOptions(CLI::App& command, RunOptions& options, bool withPrecision = true);
+// --strict alone, for a command that reads a board without the run options (render).
+void addStrictOption(CLI::App& command, bool& strict);
 
 struct CheckedRun {
   RunRequest request;
   PrecisionChoice precision;
   std::string boardName;
+  std::vector<std::string> boardWarnings;  // what the reader read leniently (io::format lines)
 };
 
 // Checks the options and reads the board and key script; on failure prints why (prefixed with

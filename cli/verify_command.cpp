@@ -71,7 +71,7 @@ nlohmann::ordered_json certifiedJson(const std::optional<verify::CertifiedSummar
           {"ties", c->ties}, {"wrong", c->wrong}, {"first_wrong", c->firstWrong}};
 }
 
-void printJson(const std::string& board, const VerifyOptions& o, const verify::LadderReport& r) {
+void printJson(const CheckedRun& run, const VerifyOptions& o, const verify::LadderReport& r) {
   nlohmann::ordered_json precisions = nlohmann::ordered_json::array();
   for (const verify::PrecisionResult& p : r.results) {
     precisions.push_back({{"precision", p.precision},
@@ -91,7 +91,8 @@ void printJson(const std::string& board, const VerifyOptions& o, const verify::L
                           {"events_per_second", p.eventsPerSecond},
                           {"cost_ratio_to_double", p.costRatio}});
   }
-  nlohmann::ordered_json out{{"board", board},
+  nlohmann::ordered_json out{{"board", run.boardName},
+                             {"warnings", run.boardWarnings},
                              {"model", o.run.model},
                              {"time", o.run.time},
                              {"max_tick", o.run.maxTick},
@@ -159,7 +160,7 @@ int verifyCommand(const VerifyOptions& o) {
     }
   }
   const verify::LadderReport report = verify::runLadder(options);
-  if (o.run.json) printJson(run.boardName, o, report);
+  if (o.run.json) printJson(run, o, report);
   else printHuman(run.boardName, o, report);
   return kExitOk;
 }

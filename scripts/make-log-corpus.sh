@@ -3,16 +3,16 @@
 # again with a gizmo binary: the valid logs, then the broken ones cut or edited from them.
 # Run it when the log format changes: scripts/make-log-corpus.sh build/release/cli/gizmo
 set -euo pipefail
-gizmo=${1:?usage: $0 GIZMO_BINARY}
+gizmo=$(realpath "${1:?usage: $0 GIZMO_BINARY}")
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$root/fixtures/logs/corpus
-spec=$root/fixtures/boards/spec-example.txt
+spec=fixtures/boards/spec-example.txt  # paths from the root: board warnings in a log name the file as given
 rm -f "$out"/*.gzlog
 
 record() {  # NAME BOARD ARGS...
   local name=$1 board=$2
   shift 2
-  "$gizmo" record "$board" -o "$out/$name.gzlog" "$@" > /dev/null
+  (cd "$root" && "$gizmo" record "$board" -o "$out/$name.gzlog" "$@" > /dev/null 2>&1)
 }
 record spec-double-0.2s "$spec" --time 0.2
 record spec-double-1s "$spec" --time 1
@@ -22,7 +22,9 @@ record spec-long-double-0.2s "$spec" --time 0.2 --precision long-double
 record spec-float128-0.1s "$spec" --time 0.1 --precision float128
 record spec-mpfr128-0.1s "$spec" --time 0.1 --precision mpfr:128
 record spec-flipper-keys-1s "$spec" --time 1 --keys "$root/fixtures/keys/flippers.keys"
-record four-balls-meeting-5s "$root/fixtures/boards/scenes/four-balls-meeting.txt" --time 5
+record four-balls-meeting-5s fixtures/boards/scenes/four-balls-meeting.txt --time 5
+# A board read leniently: the log's header lists its warnings (format 3).
+record lenient-board-1s fixtures/boards/lenient/spec-example-messy.txt --time 1
 
 # The broken ones. A log is a 12-byte file header, frames (u8 type, u32 length, payload, u64
 # checksum) and a 16-byte trailer (docs/replay-format.md).

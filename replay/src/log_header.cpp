@@ -66,6 +66,8 @@ std::vector<std::uint8_t> encodeHeader(const LogHeader& h) {
   }
   writeString(w, h.board);
   w.u64(h.boardHash);
+  w.varint(h.boardWarnings.size());
+  for (const std::string& warning : h.boardWarnings) writeString(w, warning);
   w.varint(h.params.size());
   w.bytes(h.params.data(), h.params.size());
   const auto b = w.bytes();
@@ -99,6 +101,10 @@ LogHeader decodeHeader(std::span<const std::uint8_t> payload) {
   }
   h.board = readString(r, payload.size(), "board");
   h.boardHash = r.u64();
+  const std::size_t warningsAt = r.position();
+  const std::uint64_t warnings = r.varint();
+  if (warnings > r.remaining()) throw FormatError("header: more board warnings than bytes", warningsAt);
+  for (std::uint64_t i = 0; i < warnings; ++i) h.boardWarnings.push_back(readString(r, 4096, "board warning"));
   const std::string params = readString(r, 4096, "parameters");
   h.params.assign(params.begin(), params.end());
   if (!r.atEnd()) throw FormatError("header: bytes after its end", r.position());

@@ -79,14 +79,17 @@ PhysicsParams<Real> paramsOf(const OpenedLog& log) {
 // The header frame's payload for a run of `request` on `board`.
 template <class Real>
 std::vector<std::uint8_t> headerBytes(const RunRequest& request, const PrecisionChoice& precision,
-                                      const GameBoard<Real>& board) {
-  return encodeHeader(headerFor(request, precisionName(precision), scalarName<Real>(), paramBytes(board.params())));
+                                      const GameBoard<Real>& board, const std::vector<std::string>& boardWarnings) {
+  LogHeader h = headerFor(request, precisionName(precision), scalarName<Real>(), paramBytes(board.params()));
+  h.boardWarnings = boardWarnings;
+  return encodeHeader(h);
 }
 
 template <class Real>
-RecordResult recordAs(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink) {
+RecordResult recordAs(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink,
+                      const std::vector<std::string>& boardWarnings) {
   std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(request);
-  sink.header(headerBytes(request, precision, *board));
+  sink.header(headerBytes(request, precision, *board, boardWarnings));
   Recorder<Real> recorder(sink, *board);
   board->setObserver(&recorder);
   RecordResult result;
@@ -464,7 +467,7 @@ ReplayReport replayAs(const OpenedLog& log, ReplayMethod method) {
     return report;
   }
   // The header this build would write for the run (its toolkit version, its canonical board).
-  const bool headerDiffers = !std::ranges::equal(headerBytes(log.request, log.precision, *board), log.reader.headerPayload());
+  const bool headerDiffers = !std::ranges::equal(headerBytes(log.request, log.precision, *board, log.header.boardWarnings), log.reader.headerPayload());
   const bool digestsTried = method == ReplayMethod::Digests && hasDigests(log);
   if (digestsTried) {
     if (std::optional<ReplayReport> r = replayByDigests<Real>(log, std::move(board), headerDiffers)) return *r;
@@ -527,8 +530,10 @@ decltype(auto) withLogScalar(const OpenedLog& log, F&& f) {
 
 }  // namespace
 
-RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink) {
-  return withRecordablePrecision(precision, [&]<class Real>() { return recordAs<Real>(request, precision, sink); });
+RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink,
+                       const std::vector<std::string>& boardWarnings) {
+  return withRecordablePrecision(precision,
+                                 [&]<class Real>() { return recordAs<Real>(request, precision, sink, boardWarnings); });
 }
 
 OpenedLog openLog(std::unique_ptr<ByteSource> source, bool verifyChecksums) {

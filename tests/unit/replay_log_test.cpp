@@ -344,6 +344,30 @@ TEST(ReplayLog, ReplayFindsTheFirstDecisionThatDiffers) {
 
 // A log whose header names another toolkit version (same length, framed again with a correct
 // checksum) replays identically, by either method, with a note saying so.
+// Format 3: the header keeps the warnings of the board it was recorded from (recordRun's last
+// argument), the log replays identically with them, and they take their own bytes in the header.
+TEST(ReplayLog, TheHeaderKeepsTheBoardsWarnings) {
+  const RunRequest request = requestFor("boards/spec-example.txt", MotionModel::Ballistic, 1.0);
+  const std::vector<std::string> warnings = {"b.txt:3:1: warning: 'Sink' (...) is left out",
+                                             "b.txt:9:6: warning: this ball is named 'B_2'"};
+  const std::string path = tempPath("warnings");
+  {
+    LogWriter writer(path);
+    recordRun(request, PrecisionChoice{Precision::Double, 0}, writer, warnings);
+  }
+  const Bytes bytes = readBytes(path);
+  std::remove(path.c_str());
+  const OpenedLog log = openBytes(bytes);
+  EXPECT_EQ(log.header.boardWarnings, warnings);
+  EXPECT_TRUE(replayLog(log).identical);
+
+  LogHeader h = decodeHeader(log.reader.headerPayload());
+  h.boardWarnings.clear();
+  EXPECT_EQ(decodeHeader(encodeHeader(h)).boardWarnings, std::vector<std::string>{});
+  const Bytes payload = encodeHeader(h);
+  EXPECT_LT(payload.size(), log.reader.headerPayload().size());
+}
+
 TEST(ReplayLog, AHeaderFromAnotherVersionIsNoted) {
   const Recorded& rec = specExample(5.0);
   const OpenedLog original = openBytes(rec.bytes);
@@ -714,16 +738,17 @@ TEST(ReplayLog, BadFilesSayWhatIsWrong) {
   }
   {
     Bytes b = good;
-    b[8] = 3;  // u16 format version, little-endian
+    b[8] = 4;  // u16 format version, little-endian
     b[9] = 0;
     const std::string message = openedMessage(b);
-    EXPECT_TRUE(contains(message, "version 3 is newer")) << message;
+    EXPECT_TRUE(contains(message, "version 4 is newer")) << message;
   }
-  {
+  for (const std::uint8_t old : {1, 2}) {  // before chunk digests; before the board's warnings
     Bytes b = good;
-    b[8] = 1;  // the version before chunk digests
+    b[8] = old;
     const std::string message = openedMessage(b);
-    EXPECT_TRUE(contains(message, "version 1 is older than this build reads (2); record the run again")) << message;
+    EXPECT_TRUE(contains(message, "version " + std::to_string(old) + " is older than this build reads (3); record the run again"))
+        << message;
   }
   {
     Bytes b = good;

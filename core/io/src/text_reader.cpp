@@ -2,13 +2,19 @@
 #include "gizmo/io/text_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <map>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "board_repair.hpp"
 #include "gizmo/core/board_spec_check.hpp"
+#include "key_names.hpp"
 #include "parse_util.hpp"
+#include "foreign_format.hpp"
+#include "text_additions.hpp"
 
 namespace gizmo::io {
 namespace {
@@ -75,7 +81,8 @@ class TextReader {
   struct Ref {
     bool ball = false;
     std::size_t index = 0;
-    int line = 0;  // where it was created
+    int line = 0;      // where it was created
+    std::string name;  // its name on the board (the file may write it otherwise)
   };
   struct Unresolved {
     std::string name;
@@ -87,11 +94,15 @@ class TextReader {
   SourcePos at(const Token& t) const { return SourcePos{line_, t.column}; }
 
   void readLine(std::string_view text) {
-    if (!text.empty() && text.back() == '\r') {
-      text.remove_suffix(1);
+    std::size_t crs = 0;
+    while (!text.empty() && text.back() == '\r') text.remove_suffix(1), ++crs;
+    if (crs == 1)
       rep_.lenient("crlf", SourcePos{line_, static_cast<int>(text.size()) + 1},
                    "Windows line ending (CR LF) read as a plain line end");
-    }
+    else if (crs > 1)
+      rep_.lenient("crcrlf", SourcePos{line_, static_cast<int>(text.size()) + 1},
+                   "line ending CR CR LF (a CR LF file saved again through a CR LF conversion) read as a plain "
+                   "line end");
     const std::optional<std::vector<Token>> tokens =
         tokenizeLine(text, line_, rep_, "the line is longer than 65536 bytes; no board line is that long");
     if (!tokens) return;
@@ -103,6 +114,10 @@ class TextReader {
     }
     const CommandInfo* cmd = findCommand(t[0].text);
     if (!cmd) {
+      if (const Addition* a = findAddition(t[0].text)) {
+        addition(*a, t);
+        return;
+      }
       rep_.error(at(t[0]), quote(t[0].text) +
                                " is not part of the Gizmoball format; the commands are Square, Circle, Triangle, "
                                "LeftFlipper, RightFlipper, Absorber, Ball, Rotate, Delete, Move, Connect, "
@@ -111,6 +126,14 @@ class TextReader {
       return;
     }
     if (t[0].text != cmd->canonical) keywordCase(t[0], cmd->canonical);
+    if (cmd->cmd == Cmd::Absorber && t.size() == 4) {
+      // CraigR973/Gizmoball's later saver writes an absorber's upper-left corner only.
+      rep_.lenient("absorber-corner", at(t[0]),
+                   "this absorber has no lower-right corner (Absorber NAME X1 Y1 X2 Y2); it is left out, and so are "
+                   "the commands that name " + quote(t[1].text));
+      leftOut_[std::string(t[1].text)] = std::string(t[0].text);
+      return;
+    }
     if (t.size() < cmd->tokens) {
       rep_.error(at(t[0]), std::string(cmd->canonical) + " needs " + std::to_string(cmd->tokens - 1) + " value" +
                                (cmd->tokens == 2 ? "" : "s") + " (" + std::string(cmd->usage) + ") but the line has " +
@@ -119,7 +142,18 @@ class TextReader {
         failed_.insert(std::string(t[1].text));
       return;
     }
-    if (t.size() > cmd->tokens) {
+    if (t.size() == cmd->tokens + 1 && (cmd->cmd == Cmd::Gizmo || cmd->cmd == Cmd::Ball) && allLetters(t.back().text)) {
+      rep_.lenient("trailing-word", at(t.back()),
+                   "the word " + quote(t.back().text) + " after " + std::string(cmd->usage) +
+                       " is ignored (rgallagher27/308gizmoball writes a flipper's side as true/false there, "
+                       "LukeBev/GizmoBall a colour; their readers do not use it)");
+    } else if (t.size() == cmd->tokens + 1 && cmd->cmd == Cmd::Connect && allLetters(t.back().text)) {
+      if (namesLeftOut(t[2], t[0])) return;
+      rep_.lenient("connect-action", at(t.back()),
+                   "the action word " + quote(t.back().text) +
+                       " (MIT 6.170's 'Connect PRODUCER CONSUMER ACTION') is ignored; the consumer performs its own "
+                       "action");
+    } else if (t.size() > cmd->tokens) {
       const Token& extra = t[cmd->tokens];
       rep_.error(at(extra), "unexpected " + quote(extra.text) + " after the end of the command: " +
                                 std::string(cmd->usage) + " takes " + std::to_string(cmd->tokens - 1) + " value" +
@@ -175,43 +209,120 @@ class TextReader {
   std::string kindOf(const Ref& r) const {
     return r.ball ? std::string("ball") : std::string(gizmoTypeWord(gizmos_[r.index].type));
   }
-  SourcePos whereOf(const Ref& r) const { return r.ball ? balls_[r.index].where : gizmos_[r.index].where; }
 
-  // Checks a new name; false (with an error reported) when it cannot be used.
-  bool newName(const Token& t) {
-    const std::string name(t.text);
-    if (std::string p = nameProblem(name); !p.empty()) {
-      rep_.error(at(t), p);
-      failed_.insert(name);
-      return false;
-    }
-    if (name == kOuterWallsName) {
-      rep_.error(at(t), "the name OuterWalls is reserved for the outer walls");
-      failed_.insert(name);
-      return false;
-    }
-    if (const auto it = names_.find(name); it != names_.end()) {
-      rep_.error(at(t), "the name " + quote(name) + " is already used by the " + kindOf(it->second) + " created on line " +
-                            std::to_string(it->second.line) + "; names must be unique");
-      return false;
-    }
-    return true;
+  static bool allLetters(std::string_view s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); });
   }
 
-  void created(const std::string& name, Ref ref) {
+  // The name an object written `written` gets on the board: the same when it is a valid name not
+  // yet taken; else one that is (invalid characters become '_', a taken one gains _2, _3, …),
+  // with a warning. Empty when the name cannot be used at all (reported).
+  std::string newName(const Token& t, const std::string& what) {
+    const std::string written(t.text);
+    if (written == kOuterWallsName) {
+      rep_.error(at(t), "the name OuterWalls is reserved for the outer walls");
+      failed_.insert(written);
+      return {};
+    }
+    std::string base = written;
+    const bool invalid = !nameProblem(written).empty();
+    if (invalid)
+      for (char& c : base)
+        if (!nameProblem(std::string_view(&c, 1)).empty()) c = '_';
+    std::string name = base;
+    for (int k = 2; taken_.count(name) || name == kOuterWallsName; ++k) name = base + "_" + std::to_string(k);
+    if (invalid)
+      rep_.lenient("name-characters", at(t),
+                   quote(written) + " is not a standard name (names use only letters, digits and _); the " + what +
+                       " is named " + quote(name) + " (later commands that name " + quote(written) + " mean it)");
+    else if (name != written) {
+      const auto it = names_.find(written);
+      rep_.lenient("name-twice", at(t),
+                   "the name " + quote(written) + " is already used" +
+                       (it != names_.end() ? " by the " + kindOf(it->second) + " created on line " +
+                                                 std::to_string(it->second.line)
+                                           : std::string()) +
+                       "; this " + what + " is named " + quote(name) + " (later commands that name " + quote(written) +
+                       " mean it)");
+    }
+    return name;
+  }
+
+  void created(const std::string& written, const std::string& name, Ref ref) {
     ref.line = line_;
-    names_[name] = ref;
+    ref.name = name;
+    names_[written] = ref;
+    taken_.insert(name);
+    leftOut_.erase(written);
     // Unknown-name errors about this name learn that it is created later.
-    if (const auto it = pending_.find(name); it != pending_.end()) {
+    if (const auto it = pending_.find(written); it != pending_.end()) {
       for (const std::size_t i : it->second) unresolved_[i].createdLater = line_;
       pending_.erase(it);
     }
   }
 
+  // A command another program added: the gizmo it creates, or the line itself, is left out.
+  void addition(const Addition& a, const std::vector<Token>& t) {
+    const std::string word(t[0].text);
+    switch (a.kind) {
+      case AdditionKind::Gizmo:
+        rep_.lenient("addition:" + toLowerAscii(word), at(t[0]),
+                     quote(word) + " (" + std::string(a.what) + ", from " + std::string(a.program) +
+                         ") is not a gizmo this simulator knows; it is left out" +
+                         (t.size() >= 2 ? ", and so are the commands that name " + quote(t[1].text) : std::string()));
+        if (t.size() >= 2) {
+          const std::string written(t[1].text);
+          if (const auto it = names_.find(written); it != names_.end() && !it->second.ball) {
+            // A gizmo of the same name exists; the addition does not replace it.
+          } else {
+            leftOut_[written] = word;
+          }
+        }
+        return;
+      case AdditionKind::Decoration:
+        rep_.lenient("addition:" + toLowerAscii(word), at(t[0]),
+                     quote(word) + " lines (" + std::string(a.what) + ", from " + std::string(a.program) +
+                         ") do not change how the board plays; ignored");
+        return;
+      case AdditionKind::Input:
+        rep_.lenient("addition:" + toLowerAscii(word), at(t[0]),
+                     quote(word) + " (" + std::string(a.what) + ", from " + std::string(a.program) +
+                         ") is an input this simulator does not have; the line is ignored");
+        return;
+    }
+  }
+
+  // A command that names what an addition created: dropped, with one warning per kind.
+  bool namesLeftOut(const Token& name, const Token& command) {
+    const auto it = leftOut_.find(std::string(name.text));
+    if (it == leftOut_.end()) return false;
+    rep_.lenient("names-left-out", at(command),
+                 quote(command.text) + " names " + quote(name.text) + ", the " + quote(it->second) +
+                     " that is left out; the command is ignored");
+    return true;
+  }
+
+  // A gizmo coordinate: a whole number; a decimal with a fraction is read as the cell it starts in.
+  bool cell(const Token& t, const std::string& what, long long& out) {
+    const Whole w = parseWhole(t.text, what);
+    if (!w.ok) {
+      const Number n = parseDecimal(t.text, what);
+      if (n.ok && std::fabs(n.value) <= kMaxWhole) {
+        out = static_cast<long long>(std::floor(n.value));
+        rep_.lenient("fractional-cell", at(t),
+                     quote(t.text) + " is not a whole number; the gizmo is placed in the cell it starts in, " +
+                         std::to_string(out));
+        return true;
+      }
+    }
+    return whole(t, what, out);
+  }
+
   void createGizmo(const CommandInfo& cmd, const std::vector<Token>& t) {
-    bool ok = newName(t[1]);
+    const std::string written(t[1].text);
+    const std::string name = newName(t[1], gizmoTypeWord(cmd.type));
+    bool ok = !name.empty();
     const bool nameOk = ok;
-    const std::string name(t[1].text);
     GizmoSpec g;
     g.type = cmd.type;
     g.name = name;
@@ -220,7 +331,7 @@ class TextReader {
     static const char* whats[] = {"the x coordinate", "the y coordinate", "the lower-right x coordinate",
                                   "the lower-right y coordinate"};
     const std::size_t count = cmd.cmd == Cmd::Absorber ? 4 : 2;
-    for (std::size_t i = 0; i < count; ++i) ok = whole(t[2 + i], whats[i], v[i]) && ok;
+    for (std::size_t i = 0; i < count; ++i) ok = cell(t[2 + i], whats[i], v[i]) && ok;
     if (ok && cmd.cmd == Cmd::Absorber) {
       if (v[2] <= v[0]) {
         rep_.error(at(t[4]), "the absorber's lower-right corner must lie right of its upper-left corner (X2 = " +
@@ -233,7 +344,7 @@ class TextReader {
       }
     }
     if (!ok) {
-      if (nameOk) failed_.insert(name);
+      if (nameOk) failed_.insert(written);
       return;
     }
     g.x = static_cast<int>(v[0]);
@@ -246,44 +357,46 @@ class TextReader {
     }
     gizmos_.push_back(std::move(g));
     gizmoAlive_.push_back(1);
-    created(name, Ref{false, gizmos_.size() - 1});
+    created(written, name, Ref{false, gizmos_.size() - 1, 0, {}});
   }
 
   void createBall(const std::vector<Token>& t) {
-    bool ok = newName(t[1]);
+    const std::string written(t[1].text);
+    const std::string name = newName(t[1], "ball");
+    bool ok = !name.empty();
     const bool nameOk = ok;
     BallSpec b;
-    b.name = std::string(t[1].text);
+    b.name = name;
     b.where = at(t[0]);
     ok = decimal(t[2], "the x coordinate", b.x) && ok;
     ok = decimal(t[3], "the y coordinate", b.y) && ok;
     ok = decimal(t[4], "the x velocity", b.vx) && ok;
     ok = decimal(t[5], "the y velocity", b.vy) && ok;
     if (!ok) {
-      if (nameOk) failed_.insert(b.name);
+      if (nameOk) failed_.insert(written);
       return;
     }
-    const std::string name = b.name;
     balls_.push_back(std::move(b));
     ballAlive_.push_back(1);
-    created(name, Ref{true, balls_.size() - 1});
+    created(written, name, Ref{true, balls_.size() - 1, 0, {}});
   }
 
-  // The live object named by t, or null (the error is reported, or deferred so that it can say
+  // The live object written t, or null (the error is reported, or deferred so that it can say
   // whether the name is created later).
   const Ref* lookup(const Token& t, const std::string& what) {
-    const std::string name(t.text);
-    if (const auto it = names_.find(name); it != names_.end()) return &it->second;
-    if (!failed_.count(name)) {
-      std::string message = "there is no " + what + " named " + quote(name);
-      if (toLowerAscii(name) == "outerwalls") message += " (the outer walls are named OuterWalls)";
-      pending_[name].push_back(unresolved_.size());
-      unresolved_.push_back(Unresolved{name, at(t), std::move(message), 0});
+    const std::string written(t.text);
+    if (const auto it = names_.find(written); it != names_.end()) return &it->second;
+    if (!failed_.count(written)) {
+      std::string message = "there is no " + what + " named " + quote(written);
+      if (toLowerAscii(written) == "outerwalls") message += " (the outer walls are named OuterWalls)";
+      pending_[written].push_back(unresolved_.size());
+      unresolved_.push_back(Unresolved{written, at(t), std::move(message), 0});
     }
     return nullptr;
   }
 
   void rotate(const std::vector<Token>& t) {
+    if (namesLeftOut(t[1], t[0])) return;
     const Ref* r = lookup(t[1], "gizmo");
     if (!r) return;
     if (r->ball) {
@@ -300,14 +413,19 @@ class TextReader {
   }
 
   void remove(const std::vector<Token>& t) {
+    if (namesLeftOut(t[1], t[0])) {
+      leftOut_.erase(std::string(t[1].text));
+      return;
+    }
     const Ref* r = lookup(t[1], "gizmo or ball");
     if (!r) return;
-    const std::string name(t[1].text);
+    const std::string name = r->name;
     if (r->ball)
       ballAlive_[r->index] = 0;
     else
       gizmoAlive_[r->index] = 0;
-    names_.erase(name);
+    names_.erase(std::string(t[1].text));
+    taken_.erase(name);
     // Its connections go with it.
     if (const auto it = connectionsOf_.find(name); it != connectionsOf_.end()) {
       for (const std::size_t i : it->second)
@@ -329,6 +447,7 @@ class TextReader {
   }
 
   void move(const std::vector<Token>& t) {
+    if (namesLeftOut(t[1], t[0])) return;
     const Ref* r = lookup(t[1], "gizmo or ball");
     if (!r) return;
     if (r->ball) {
@@ -342,8 +461,8 @@ class TextReader {
       b.where = at(t[0]);
     } else {
       long long x = 0, y = 0;
-      bool ok = whole(t[2], "the x coordinate", x);
-      ok = whole(t[3], "the y coordinate", y) && ok;
+      bool ok = cell(t[2], "the x coordinate", x);
+      ok = cell(t[3], "the y coordinate", y) && ok;
       if (!ok) return;
       GizmoSpec& g = gizmos_[r->index];
       g.x = static_cast<int>(x);
@@ -352,22 +471,35 @@ class TextReader {
     }
   }
 
-  bool target(const Token& t) {
-    if (t.text == kOuterWallsName) {
+  // A connection's end: its board name, "" when it names nothing now (the connection is then
+  // deferred to the end of the file), or nullopt when it is wrong (reported).
+  std::optional<std::string> end(const Token& t, bool source) {
+    const std::string written(t.text);
+    if (written == kOuterWallsName) {
+      if (source) return written;
       rep_.error(at(t), "the outer walls cannot be a connection target: they have no action");
-      return false;
+      return std::nullopt;
     }
-    return lookup(t, "gizmo") != nullptr;
+    if (const auto it = names_.find(written); it != names_.end()) return it->second.name;
+    if (failed_.count(written)) return std::nullopt;
+    return std::string();
   }
 
   void connect(const std::vector<Token>& t) {
-    bool ok = t[1].text == kOuterWallsName || lookup(t[1], "gizmo") != nullptr;
-    ok = target(t[2]) && ok;
-    if (!ok) return;
-    ConnectSpec c{std::string(t[1].text), std::string(t[2].text), at(t[0])};
+    if (namesLeftOut(t[1], t[0]) || namesLeftOut(t[2], t[0])) return;
+    const std::optional<std::string> source = end(t[1], true), target = end(t[2], false);
+    if (!source || !target) return;
+    if (source->empty() || target->empty()) {
+      deferred_.push_back(Deferred{std::string(t[1].text), std::string(t[2].text), 0, {}, at(t[0]), false});
+      return;
+    }
+    addConnect(ConnectSpec{*source, *target, at(t[0])});
+  }
+
+  void addConnect(ConnectSpec c) {
     const auto [it, inserted] = connectionIndex_.emplace(std::make_pair(c.source, c.target), connections_.size());
     if (!inserted) {
-      rep_.lenient("duplicate-connection", at(t[0]),
+      rep_.lenient("duplicate-connection", c.where,
                    "this connection repeats the one on line " + std::to_string(connections_[it->second].where.line) +
                        "; the repetition is ignored");
       return;
@@ -376,6 +508,25 @@ class TextReader {
     connectionsOf_[c.target].push_back(connections_.size());
     connections_.push_back(std::move(c));
     connectionAlive_.push_back(1);
+  }
+
+  // The key code of a KeyConnect: a whole number, or a key's name as some programs write it.
+  bool keyCode(const Token& t, long long& key) {
+    if (!parseDecimal(t.text, "the key code").ok) {
+      if (const std::optional<int> named = keyCodeOfName(t.text)) {
+        key = *named;
+        rep_.lenient("key-name", at(t),
+                     "the key " + quote(t.text) + " is read as the key code " + std::to_string(key) +
+                         " (lejhy/Gizmoball writes JavaFX key names; the standard format writes the code)");
+        return true;
+      }
+    }
+    if (!whole(t, "the key code", key)) return false;
+    if (std::string p = keyCodeProblem(key); !p.empty()) {
+      rep_.error(at(t), p);
+      return false;
+    }
+    return true;
   }
 
   void keyConnect(const std::vector<Token>& t) {
@@ -387,30 +538,41 @@ class TextReader {
       keywordCase(t[1], "key");
     }
     long long key = 0;
-    if (whole(t[2], "the key code", key)) {
-      if (std::string p = keyCodeProblem(key); !p.empty()) {
-        rep_.error(at(t[2]), p);
-        ok = false;
-      }
-    } else {
-      ok = false;
-    }
-    KeyDirection direction = KeyDirection::Down;
+    ok = keyCode(t[2], key) && ok;
+    std::vector<KeyDirection> directions;
     const std::string dir = toLowerAscii(t[3].text);
     if (dir == "down" || dir == "up") {
-      direction = dir == "down" ? KeyDirection::Down : KeyDirection::Up;
+      directions.push_back(dir == "down" ? KeyDirection::Down : KeyDirection::Up);
       if (t[3].text != dir) keywordCase(t[3], dir);
+    } else if (dir == "ondown" || dir == "change") {
+      // Both programs ignore the word and perform the action on the press and on the release.
+      directions = {KeyDirection::Down, KeyDirection::Up};
+      rep_.lenient("key-direction:" + dir, at(t[3]),
+                   quote(t[3].text) + " is read as two connections, down and up: " +
+                       (dir == "ondown" ? std::string("ConfuddledPenguin/Gizmoball's reader ignores the word, and "
+                                                      "every key it registers acts on the press and on the release")
+                                        : std::string("jtax/Gizmoball-WJ2's reader ignores the word, and its key "
+                                                      "listener triggers on the press and on the release")));
     } else {
       rep_.error(at(t[3]), "the key direction must be down or up, not " + quote(t[3].text));
       ok = false;
     }
-    ok = target(t[4]) && ok;
-    if (!ok) return;
-    KeyConnectSpec k{static_cast<int>(key), direction, std::string(t[4].text), at(t[0])};
+    if (namesLeftOut(t[4], t[0])) return;
+    const std::optional<std::string> target = end(t[4], false);
+    if (!ok || !target) return;
+    for (const KeyDirection d : directions) {
+      if (target->empty())
+        deferred_.push_back(Deferred{{}, std::string(t[4].text), static_cast<int>(key), d, at(t[0]), true});
+      else
+        addKeyConnect(KeyConnectSpec{static_cast<int>(key), d, *target, at(t[0])});
+    }
+  }
+
+  void addKeyConnect(KeyConnectSpec k) {
     const auto [it, inserted] =
         keyIndex_.emplace(std::make_tuple(k.key, static_cast<int>(k.direction), k.target), keyConnections_.size());
     if (!inserted) {
-      rep_.lenient("duplicate-connection", at(t[0]),
+      rep_.lenient("duplicate-connection", k.where,
                    "this connection repeats the one on line " +
                        std::to_string(keyConnections_[it->second].where.line) + "; the repetition is ignored");
       return;
@@ -418,6 +580,34 @@ class TextReader {
     keyConnectionsOf_[k.target].push_back(keyConnections_.size());
     keyConnections_.push_back(std::move(k));
     keyAlive_.push_back(1);
+  }
+
+  // Connections that named something not there at their line: made when it exists at the end of
+  // the file (a saver that wrote connections before gizmos), else ignored.
+  void resolveDeferred() {
+    for (Deferred& d : deferred_) {
+      std::string missing;
+      std::string source = d.source, target;
+      if (!d.key) {
+        if (source != kOuterWallsName) {
+          if (const auto it = names_.find(source); it != names_.end() && !it->second.ball) source = it->second.name;
+          else missing = d.source;
+        }
+      }
+      if (const auto it = names_.find(d.target); it != names_.end() && !it->second.ball) target = it->second.name;
+      else if (missing.empty()) missing = d.target;
+      if (!missing.empty()) {
+        rep_.lenient("connection-unknown", d.where,
+                     "there is no gizmo named " + quote(missing) + " in the file; the connection is ignored");
+        continue;
+      }
+      rep_.lenient("connection-later", d.where,
+                   "this connection names a gizmo that is created further down; it is made at the end of the file");
+      if (d.key)
+        addKeyConnect(KeyConnectSpec{d.code, d.direction, target, d.where});
+      else
+        addConnect(ConnectSpec{source, target, d.where});
+    }
   }
 
   void gravity(const std::vector<Token>& t) {
@@ -455,6 +645,7 @@ class TextReader {
                      "; commands take effect in file order)";
       rep_.error(u.at, std::move(u.message));
     }
+    resolveDeferred();
     BoardSpec board;
     board.gravity = gravity_;
     board.mu = mu_;
@@ -467,9 +658,19 @@ class TextReader {
       if (connectionAlive_[i]) board.connections.push_back(std::move(connections_[i]));
     for (std::size_t i = 0; i < keyConnections_.size(); ++i)
       if (keyAlive_[i]) board.keyConnections.push_back(std::move(keyConnections_[i]));
+    if (!rep_.failed()) repairPlacements(board, rep_);
     for (SpecProblem& p : checkBoardSpec(board)) rep_.error(p.where, std::move(p.message));
     return board;
   }
+
+  struct Deferred {
+    std::string source;  // empty for a KeyConnect
+    std::string target;
+    int code = 0;
+    KeyDirection direction = KeyDirection::Down;
+    SourcePos where;
+    bool key = false;
+  };
 
   std::string_view content_;
   Reporter& rep_;
@@ -479,10 +680,13 @@ class TextReader {
   std::vector<char> gizmoAlive_;
   std::vector<BallSpec> balls_;
   std::vector<char> ballAlive_;
-  std::unordered_map<std::string, Ref> names_;               // live objects
+  std::unordered_map<std::string, Ref> names_;  // live objects by the name the file writes
+  std::unordered_set<std::string> taken_;       // the board names of live objects
+  std::unordered_map<std::string, std::string> leftOut_;  // names of left-out additions → their word
   std::unordered_map<std::string, std::vector<std::size_t>> pending_;  // unresolved_ entries by name
   std::unordered_set<std::string> failed_;  // names whose statement failed: no second error about them
   std::vector<Unresolved> unresolved_;
+  std::vector<Deferred> deferred_;
 
   std::vector<ConnectSpec> connections_;
   std::vector<char> connectionAlive_;
@@ -503,6 +707,7 @@ class TextReader {
 ReadResult readTextBoard(std::string_view content, const std::string& fileName) {
   Reporter rep(fileName);
   if (content.size() > kMaxFileBytes) fail(fileName, {}, "the file is larger than 16 MiB, the limit for board files");
+  if (const std::optional<std::string> foreign = foreignFormat(content)) fail(fileName, {}, *foreign);
   BoardSpec board = TextReader(content, rep).run();
   rep.throwIfFailed();
   return ReadResult{std::move(board), rep.warnings()};

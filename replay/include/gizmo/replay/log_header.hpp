@@ -24,6 +24,9 @@ struct LogHeader {
   std::vector<TimedKey> keys;
   std::string board;       // canonical text form (io::writeTextBoard)
   std::uint64_t boardHash = 0;  // checksum64 of the board text
+  // What the board reader said about the file the board came from (io::format of each warning):
+  // empty when it was read as written. Format version 3.
+  std::vector<std::string> boardWarnings;
   std::vector<std::uint8_t> params;  // PhysicsParams in the scalar's exact encoding (paramBytes)
 };
 

@@ -23,8 +23,10 @@ struct RecordResult {
   std::string error;  // why the run stopped early (the log says so too)
 };
 // Runs the request in the chosen scalar and sends the log to sink. A run that stops with an
-// error still closes its log (completed = false).
-RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink);
+// error still closes its log (completed = false). boardWarnings are the board reader's warnings
+// (io::format of each), kept in the header so that a run of a leniently read board says so.
+RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink,
+                       const std::vector<std::string>& boardWarnings = {});
 
 // --- plain views of decoded values -----------------------------------------------------------
 struct Exact {

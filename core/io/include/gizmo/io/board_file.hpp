@@ -18,4 +18,8 @@ ReadResult readBoardFile(const std::string& path);
 // The same for content already in memory; name is used in diagnostics.
 ReadResult readBoardString(std::string_view content, const std::string& name);
 
+// What --strict does with a board that was read: nothing when it was read as written, else
+// throws InputError whose errors are its warnings (each one says what was read leniently).
+void refuseLeniency(const ReadResult& result);
+
 }  // namespace gizmo::io
