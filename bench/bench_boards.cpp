@@ -1,10 +1,17 @@
 #include "bench_boards.hpp"
 
+#include <filesystem>
 #include <string>
 
 #include "gizmo/io/board_file.hpp"
 
 namespace gizmo::bench {
+
+std::optional<BoardSpec> realBoard(const std::string& name) {
+  const std::filesystem::path path = std::filesystem::path(GIZMO_REAL_BOARDS_DIR) / name;
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  return io::readBoardFile(path.string()).board;
+}
 
 BoardSpec specExample() { return io::readBoardFile(GIZMO_FIXTURES_DIR "/boards/spec-example.txt").board; }
 

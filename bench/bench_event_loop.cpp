@@ -3,7 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_boards.hpp"
-#include "gizmo/core/run/run.hpp"
+#include "bench_run.hpp"
 
 namespace gizmo::bench {
 namespace {
@@ -11,20 +11,7 @@ namespace {
 constexpr double kBoardSeconds = 10.0;
 
 void runBoard(benchmark::State& state, const BoardSpec& board, MotionModel model, BoardObserver<double>* observer) {
-  RunRequest request;
-  request.board = board;
-  request.model = model;
-  request.duration = kBoardSeconds;
-  std::uint64_t events = 0;
-  for (auto _ : state) {
-    const RunSummary s = simulate<double>(request, observer);
-    events += s.total;
-    benchmark::DoNotOptimize(s.energy);
-  }
-  state.counters["events/s"] = benchmark::Counter(double(events), benchmark::Counter::kIsRate);
-  state.counters["board_s/s"] =
-      benchmark::Counter(kBoardSeconds * double(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["events/run"] = double(events) / double(state.iterations());
+  bench::runBoard(state, board, model, observer, kBoardSeconds);
 }
 
 struct SilentObserver final : BoardObserver<double> {};

@@ -319,6 +319,46 @@ TYPED_TEST(FirstEntry, EmptyAndDegenerateWindows) {
   EXPECT_TRUE(*r == inside);
 }
 
+// The bounds that settle gaps before the derivative cascade (detail::noEntryByBounds) must give
+// exactly the cascade's answer. Gaps of a falling ball near a circle, as circleTimeOfImpact forms
+// them: from just touching (the ball has just bounced off it) to 10^-3 away, slow and fast,
+// leaving and closing, over the horizons the board uses. Fixed seed 23, so the run repeats.
+TYPED_TEST(FirstEntryWide, BoundsAnswerAsTheCascadeDoes) {
+  using Real = TypeParam;
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const double reach = 0.75, gravity = 25;
+  int settledByBounds = 0, entries = 0;
+  const int cases = 4000;
+  for (int k = 0; k < cases; ++k) {
+    const double angle = 3.14159 * unit(rng), gapAway = std::ldexp(std::abs(unit(rng)), -int(10 + 30 * std::abs(unit(rng))));
+    const double speed = std::ldexp(std::abs(unit(rng)), -int(8 * std::abs(unit(rng))));
+    const double heading = 3.14159 * unit(rng);
+    const double limit = 0.05 * std::abs(unit(rng)) + 1e-4;
+    const Real dx = fd<Real>((reach + gapAway) * std::cos(angle)), dy = fd<Real>((reach + gapAway) * std::sin(angle));
+    const Real vx = fd<Real>(speed * std::cos(heading)), vy = fd<Real>(speed * std::sin(heading));
+    const Real ay = fd<Real>(gravity), r = fd<Real>(reach);
+    const std::array<Real, 5> c{Real(dx * dx + dy * dy - r * r), Real(Real(2) * (dx * vx + dy * vy)),
+                                Real(vx * vx + vy * vy + dy * ay), Real(vy * ay), Real(ay * ay / Real(4))};
+    const Real hi = fd<Real>(limit);
+    const gm::detail::Quartic<Real> g(c);
+    const Real gLo = g.value(Real(0));
+    if (gLo <= 0 && g.slope(Real(0)) < 0) continue;  // an entry at 0: decided before either
+    const auto all = [](const Real&) { return true; };
+    const std::optional<Real> cascade = gm::detail::entryByCascade(g, Real(0), hi, gLo, all);
+    const std::optional<Real> got = gm::firstEntry(c, Real(0), hi);
+    ASSERT_EQ(got.has_value(), cascade.has_value()) << "case " << k;
+    if (got) {
+      EXPECT_TRUE(*got == *cascade) << "case " << k;
+      ++entries;
+    }
+    settledByBounds += gm::detail::noEntryByBounds(g, hi, gLo) ? 1 : 0;
+  }
+  // Both kinds are common enough that the comparison means something.
+  EXPECT_GT(settledByBounds, cases / 10);
+  EXPECT_GT(entries, cases / 10);
+}
+
 // Many polynomials from random dyadic roots (exact coefficients, exact signs at dyadic points):
 // the expected first accepted entry follows from counting roots.
 TYPED_TEST(FirstEntryWide, RandomDyadicPolynomials) {

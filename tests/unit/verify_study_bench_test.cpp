@@ -227,6 +227,8 @@ TEST(StudyKernels, EventLoopRecordingAndCertificationAreReadAsRatios) {
                  entry("BM_SpecExampleBallisticObserved", "iteration", 1.1, "ms", specRates),
                  entry("BM_CrowdedClassic", "iteration", 30, "ms", "\"events/run\": 10000, \"events/s\": 2e5, \"board_s/s\": 200"),
                  entry("BM_CrowdedBallistic", "iteration", 20, "ms", "\"events/run\": 90000"),
+                 entry("BM_SpecExample600sBallistic", "iteration", 600, "ms",
+                       "\"events/run\": 300000, \"events/s\": 5e5, \"board_s/s\": 1000"),
                  entry("BM_SpecUnrecorded", "iteration", 2, "ms"), entry("BM_SpecRecordedToFile", "iteration", 3, "ms"),
                  entry("BM_SpecReplayed", "iteration", 5, "ms"), entry("BM_CrowdedRecordedToFile", "iteration", 9, "ms"),
                  aggregate("BM_CertifyRatio/ballistic:0", "mean", 10, "ms", "\"ratio\": 2.5"),
@@ -246,8 +248,12 @@ TEST(StudyKernels, EventLoopRecordingAndCertificationAreReadAsRatios) {
   EXPECT_EQ(observed.ratioTo, "ballistic");
   EXPECT_NEAR(observed.ratio->mean, 1.1, 1e-12);
   EXPECT_DOUBLE_EQ(pointOf(k, KernelChart::EventLoop, "crowded", "classic").value.mean, 3);  // 30 ms for 10 board s
+  // A whole game (bench/bench_games.cpp) beside the 10 s runs: 600 ms for 600 board seconds.
+  const KernelPoint& game = pointOf(k, KernelChart::EventLoop, "spec example, 600 s", "ballistic");
+  EXPECT_DOUBLE_EQ(game.value.mean, 1);
+  EXPECT_EQ(game.detail, "2 µs per event, 300000 events in 600 board s");
   // Without its rates a run's board seconds are unknown: read, not charted.
-  EXPECT_EQ(k.of(KernelChart::EventLoop).size(), 3u);
+  EXPECT_EQ(k.of(KernelChart::EventLoop).size(), 4u);
 
   const KernelPoint& file = pointOf(k, KernelChart::Recording, "spec example", "recorded to file");
   EXPECT_EQ(file.unit, "x unrecorded");

@@ -120,7 +120,12 @@ class Builder {
 
   void eventLoop() {
     const std::size_t first = figures_.points.size();
-    for (const auto& [board, label] : {std::pair{"SpecExample", "spec example"}, std::pair{"Crowded", "crowded"}})
+    // The 10 s runs, then the whole games of bench/bench_games.cpp.
+    for (const auto& [board, label] :
+         {std::pair{"SpecExample", "spec example"}, std::pair{"Crowded", "crowded"},
+          std::pair{"SpecExample600s", "spec example, 600 s"}, std::pair{"SpecExample3600s", "spec example, 3600 s"},
+          std::pair{"Crowded60s", "crowded, 60 s"}, std::pair{"RealManyBalls60s", "many-balls, 60 s"},
+          std::pair{"RealFlipperCollision60s", "flipper-coll, 60 s"}, std::pair{"RealMultiball60s", "multiball, 60 s"}})
       for (const auto& [variant, series] : {std::pair{"Ballistic", "ballistic"}, std::pair{"BallisticObserved", "ballistic, observed"},
                                             std::pair{"Classic", "classic"}}) {
         const BenchFigure* f = bench_.find(std::string("BM_") + board + variant);

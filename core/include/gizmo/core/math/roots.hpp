@@ -271,36 +271,89 @@ bool tooNarrow(const Real& a, const Real& b, const Real& floor, int ulps) {
   return !(a < mid && mid < b);
 }
 
-}  // namespace detail
+// Cheap proofs that the derivative cascade (entryByCascade) finds no entry in (0, span], from
+// bounds on g and g' over the whole interval (each term c_i t^i lies between 0 and c_i span^i
+// there). They decide only what the cascade would decide the same way, so the answer does not
+// change: each bound must clear a margin of 16 eps times the sum of the terms' sizes, far above
+// the rounding of the bound itself and of the evaluations the cascade would make (compensated
+// Horner: eps |g| plus O(eps^2)), so that every value the cascade would compute has the sign
+// the bound proves.
+template <class Real>
+struct ExclusionBounds {
+  Real sizes{0};  // sum of |c_i| span^i
+  Real terms[5];  // c_i span^i
+  ExclusionBounds(const Quartic<Real>& g, const Real& span) {
+    Real power(1);
+    for (int i = 0; i <= 4; ++i) {
+      terms[i] = g.c[i] * power;
+      sizes = sizes + absOf(terms[i]);
+      power = power * span;
+    }
+  }
+  Real margin(const Real& size) const { return Real(16) * epsilonOf<Real>() * size; }
 
-// First entry of the polynomial gap g(t) = c[0] + c[1] t + ... + c[4] t^4 in [lo, hi] (leading
-// coefficients may be 0) that `accept` approves; nullopt if none (or if hi < lo).
-//
-// Derivative cascade: the real roots of g' inside (lo, hi) split [lo, hi] into monotone pieces;
-// a piece [a, b] with g(a) > 0 >= g(b) holds exactly one entry (when g(b) == 0 it is b, provided
-// g goes negative after b), which solveEntry brackets to a few ulps. The roots of g' come the same
-// way from those of g'' (closed form for degree <= 2, cancellation-free).
+  // g' > 0 on [0, span]: g' >= c1 + sum over i >= 2 of min(0, i c_i span^(i-1)). Then g has no
+  // turning point there, and the cascade's one piece [0, span] is decided by its ends' signs.
+  bool increasing(const Real& span) const {
+    if (!(Real(0) < span)) return false;
+    Real low = terms[1];
+    Real size = absOf(terms[1]);
+    for (int i = 2; i <= 4; ++i) {
+      const Real slopeTerm = Real(i) * terms[i];  // i c_i span^i = span * (i c_i span^(i-1))
+      low = low + minOf(Real(0), slopeTerm);
+      size = size + absOf(slopeTerm);
+    }
+    return margin(size) < low;
+  }
+
+  // g > 0 on [0, span]: the quadratic part c0 + c1 t + c2 t^2, minimised exactly over the
+  // interval, plus min(0, c_i span^i) for the cubic and quartic terms.
+  bool positive(const Quartic<Real>& g, const Real& span) const {
+    Real low = minOf(terms[0], Real(terms[0] + terms[1] + terms[2]));
+    if (Real(0) < g.c[2]) {
+      const Real vertex = -g.c[1] / (Real(2) * g.c[2]);
+      if (Real(0) < vertex && vertex < span) low = minOf(low, Real(g.c[0] - g.c[1] * g.c[1] / (Real(4) * g.c[2])));
+    }
+    low = low + minOf(Real(0), terms[3]) + minOf(Real(0), terms[4]);
+    return margin(sizes) < low;
+  }
+};
+
+// Whether the bounds prove that the cascade (entryByCascade) finds no entry of g in (0, hi];
+// gLo = g(0) as evaluated. A ball that just left a surface, or passes near one while moving away,
+// gives such gaps: without the proof each costs a derivative cascade with a Newton search for a
+// turning point.
+template <class Real>
+bool noEntryByBounds(const Quartic<Real>& g, const Real& hi, const Real& gLo) {
+  if (g.degree <= 2) return false;  // the cascade is a closed form there already
+  const ExclusionBounds<Real> bounds(g, hi);
+  if (bounds.positive(g, hi)) return true;  // every value the cascade computes is > 0
+  // Increasing throughout, for a quartic: every value of g' that the cascade computes (at the
+  // ends and at the closed-form roots of g'') is then > 0, so it finds no turning point and
+  // decides its one piece [0, hi] by the signs at its ends, as here. (A cubic's turning points
+  // come from a closed form that rounding could move into the interval: the bound is not used.)
+  return g.degree == 4 && bounds.increasing(hi) && !(gLo > 0 && g.value(hi) <= 0);
+}
+
+// The derivative cascade over [lo, hi] (see firstEntry), given gLo = g(lo) as evaluated.
 template <class Real, class Accept>
-std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, const Real& hi,
-                               Accept&& accept) {
-  const detail::Quartic<Real> g(c);
-  const Real gLo = g.value(lo);
-  if (gLo <= 0 && g.slope(lo) < 0 && accept(lo)) return lo;
-  if (!(lo < hi) || g.degree == 0) return std::nullopt;
-  detail::RootList<Real> turns;
-  detail::rootsInside(g.derivative(), lo, hi, turns);
+std::optional<Real> entryByCascade(const Quartic<Real>& g, const Real& lo, const Real& hi, const Real& gLo,
+                                   Accept&& accept) {
+  const std::array<Real, 5>& c = g.c;
+  RootList<Real> turns;
+  rootsInside(g.derivative(), lo, hi, turns);
   // Up to degree 2 the closed form gives the roots to an ulp or two; they seed the bracketed
   // search, which still decides the answer.
   // They are worked out when a piece first holds an entry: an exact scalar needs a root's square
   // root only where there is an entry to report.
-  detail::RootList<Real> direct;
+  RootList<Real> direct;
   bool directKnown = false;
   // Beyond degree 2 the secant through the piece's ends starts the search: on a monotone piece
   // it is usually close, and the bracketed search still decides.
   auto guessIn = [&](const Real& a, const Real& b, const Real& ga, const Real& gb) -> std::optional<Real> {
     if (!directKnown) {
       if (g.degree == 1) direct.addIfNew(Real(-c[0] / c[1]));
-      if (g.degree == 2) detail::quadraticRoots(c[2], c[1], c[0], direct);
+      if (g.degree == 2) quadraticRoots(c[2], c[1], c[0], direct);
       directKnown = true;
     }
     for (int k = 0; k < direct.n; ++k)
@@ -313,7 +366,7 @@ std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, con
   for (int i = 0; i <= turns.n; ++i) {
     const Real b = i < turns.n ? turns.t[i] : hi;
     const Real gb = g.value(b);
-    if (ga > 0 && gb <= 0 && (gb < 0 || detail::goesNegativeAfter(g, b))) {
+    if (ga > 0 && gb <= 0 && (gb < 0 || goesNegativeAfter(g, b))) {
       Real t = b;
       if (gb != 0) {
         const std::optional<Real> guess = guessIn(a, b, ga, gb);
@@ -325,8 +378,8 @@ std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, con
             throw IrrationalValue("the root of a gap polynomial of degree " + std::to_string(g.degree));
           t = *guess;
         } else {
-          t = detail::solveEntry([&g](const Real& x) -> Real { return g.value(x); },
-                                 [&g](const Real& x) -> Real { return g.slope(x); }, a, b, gb, guess);
+          t = solveEntry([&g](const Real& x) -> Real { return g.value(x); },
+                         [&g](const Real& x) -> Real { return g.slope(x); }, a, b, gb, guess);
         }
       }
       if (accept(t)) return t;
@@ -335,6 +388,28 @@ std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, con
     ga = gb;
   }
   return std::nullopt;
+}
+
+}  // namespace detail
+
+// First entry of the polynomial gap g(t) = c[0] + c[1] t + ... + c[4] t^4 in [lo, hi] (leading
+// coefficients may be 0) that `accept` approves; nullopt if none (or if hi < lo).
+//
+// Derivative cascade: the real roots of g' inside (lo, hi) split [lo, hi] into monotone pieces;
+// a piece [a, b] with g(a) > 0 >= g(b) holds exactly one entry (when g(b) == 0 it is b, provided
+// g goes negative after b), which solveEntry brackets to a few ulps. The roots of g' come the same
+// way from those of g'' (closed form for degree <= 2, cancellation-free).
+// Before the cascade, cheap bounds (detail::noEntryByBounds) settle the gaps that provably have
+// no entry in (0, hi]; they give the answer the cascade would.
+template <class Real, class Accept>
+std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, const Real& hi,
+                               Accept&& accept) {
+  const detail::Quartic<Real> g(c);
+  const Real gLo = g.value(lo);
+  if (gLo <= 0 && g.slope(lo) < 0 && accept(lo)) return lo;
+  if (!(lo < hi) || g.degree == 0) return std::nullopt;
+  if (lo == Real(0) && detail::noEntryByBounds(g, hi, gLo)) return std::nullopt;
+  return detail::entryByCascade(g, lo, hi, gLo, accept);
 }
 
 // The same, accepting every candidate.
