@@ -11,6 +11,9 @@
 # with extra sloppiness settings, and otherwise compiles it every time, so a cached build would
 # lose more than it gains; and a unity group is compiled again whenever one of its sources
 # changes, which an edit-and-rebuild cycle feels. A fresh clone (no cache) and CI get both.
+# The asan preset and the libFuzzer build (scripts/fuzz-run.sh) turn both off: they compile
+# every source on its own, so a header that a source forgot to include cannot hide behind a
+# neighbour in its unity group, and clang is not given g++'s precompiled-header workaround.
 set(GIZMO_FRESH_BUILD_DEFAULT ON)
 if(CMAKE_CXX_COMPILER_LAUNCHER MATCHES "ccache")
   set(GIZMO_FRESH_BUILD_DEFAULT OFF)

@@ -52,6 +52,7 @@ fi
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
 CC=clang CXX=clang++ cmake -S . -B build/fuzz "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DGIZMO_UNITY_BUILD=OFF -DGIZMO_PRECOMPILE_HEADERS=OFF \
   -DGIZMO_BUILD_BENCH=OFF -DGIZMO_BUILD_FUZZERS=ON >/dev/null
 cmake --build build/fuzz --target "${targets[@]/%/_fuzz}" -j "$(nproc)"
 

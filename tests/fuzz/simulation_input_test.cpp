@@ -38,7 +38,12 @@ TEST(SimulationFuzzInput, RefusesWhatIsNotARunOfTheEnvelope) {
     EXPECT_FALSE(read(std::string(header) + "\nboard\n" + kBoard)) << header;
   EXPECT_FALSE(read("run ballistic 0.05 0.5\n" + kBoard)) << "no line 'board'";
   EXPECT_FALSE(read("run ballistic 0.05 0.5\n0.1 sideways 32\nboard\n" + kBoard)) << "a bad key script";
-  EXPECT_FALSE(read("run ballistic 0.05 0.5\nboard\nSquare S 5 5\nSquare T 5 5\n")) << "gizmos overlap";
+  // Overlapping gizmos are read as the board reader reads them (docs/board-files.md: the later
+  // one is left out, with a warning), so the run is the one `gizmo run` would make.
+  const std::optional<RunRequest> overlap = read("run ballistic 0.05 0.5\nboard\nSquare S 5 5\nSquare T 5 5\n");
+  ASSERT_TRUE(overlap) << "gizmos overlap";
+  ASSERT_EQ(overlap->board.gizmos.size(), 1u);
+  EXPECT_EQ(overlap->board.gizmos[0].name, "S");
   EXPECT_FALSE(read("run ballistic 0.05 0.5\nboard\nGravity 1000.5\n" + kBoard)) << "gravity";
   EXPECT_FALSE(read("run ballistic 0.05 0.5\nboard\nFriction 0.025 5.5\n" + kBoard)) << "friction";
   EXPECT_FALSE(read("run ballistic 0.05 0.5\nboard\nBall B 2.0 2.5 4000.0 3001.0\n")) << "a ball faster than 5000 L/s";
