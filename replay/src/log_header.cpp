@@ -35,11 +35,12 @@ std::string readString(ByteReader& r, std::size_t limit, const char* what) {
 }  // namespace
 
 LogHeader headerFor(const RunRequest& request, const std::string& precision, const std::string& scalar,
-                    std::vector<std::uint8_t> params) {
+                    const std::string& format, std::vector<std::uint8_t> params) {
   LogHeader h;
   h.toolkit = GIZMO_VERSION;
   h.precision = precision;
   h.scalar = scalar;
+  h.format = format;
   h.model = request.model;
   h.maxTick = request.maxTick;
   h.duration = request.duration;
@@ -55,6 +56,7 @@ std::vector<std::uint8_t> encodeHeader(const LogHeader& h) {
   writeString(w, h.toolkit);
   writeString(w, h.precision);
   writeString(w, h.scalar);
+  writeString(w, h.format);
   w.u8(static_cast<std::uint8_t>(h.model));
   w.u64(std::bit_cast<std::uint64_t>(h.maxTick));
   w.u64(std::bit_cast<std::uint64_t>(h.duration));
@@ -78,6 +80,7 @@ LogHeader decodeHeader(std::span<const std::uint8_t> payload) {
   h.toolkit = readString(r, 256, "toolkit version");
   h.precision = readString(r, 256, "precision");
   h.scalar = readString(r, 256, "scalar");
+  h.format = readString(r, 256, "scalar format");
   const std::uint8_t model = r.u8();
   if (model > 1) throw FormatError("header: unknown motion model", r.position() - 1);
   h.model = static_cast<MotionModel>(model);

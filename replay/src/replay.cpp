@@ -80,7 +80,8 @@ PhysicsParams<Real> paramsOf(const OpenedLog& log) {
 template <class Real>
 std::vector<std::uint8_t> headerBytes(const RunRequest& request, const PrecisionChoice& precision,
                                       const GameBoard<Real>& board) {
-  return encodeHeader(headerFor(request, precisionName(precision), scalarName<Real>(), paramBytes(board.params())));
+  return encodeHeader(headerFor(request, precisionName(precision), scalarName<Real>(), scalarFormat<Real>(),
+                                 paramBytes(board.params())));
 }
 
 template <class Real>
@@ -521,6 +522,11 @@ decltype(auto) withLogScalar(const OpenedLog& log, F&& f) {
   return withRecordablePrecision(log.precision, [&]<class Real>() -> decltype(auto) {
     if (scalarName<Real>() != log.header.scalar)
       throw FormatError("the log was made with " + log.header.scalar + ", this build computes " + scalarName<Real>(), 0);
+    if (scalarFormat<Real>() != log.header.format)
+      throw FormatError("the log's " + log.header.scalar + " is " + log.header.format + ", this build's " +
+                            scalarName<Real>() + " is " + scalarFormat<Real>() +
+                            ": the formats differ, so the log cannot be replayed here",
+                        0);
     return f.template operator()<Real>();
   });
 }

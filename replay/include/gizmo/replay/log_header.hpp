@@ -18,6 +18,7 @@ struct LogHeader {
   std::string toolkit;    // the gizmo version that wrote the log
   std::string precision;  // as requested ("double", "mpfr:256"): selects the scalar again
   std::string scalar;     // as computed ("mpfr:261"): checked when the log is read back
+  std::string format;     // the scalar's binary format ("binary64", "x87-extended80"): likewise
   MotionModel model = MotionModel::Ballistic;
   double maxTick = 0.05;
   double duration = 0;
@@ -29,7 +30,7 @@ struct LogHeader {
 
 // The header of a run about to be recorded in scalar `precision`.
 LogHeader headerFor(const RunRequest& request, const std::string& precision, const std::string& scalar,
-                    std::vector<std::uint8_t> params);
+                    const std::string& format, std::vector<std::uint8_t> params);
 std::vector<std::uint8_t> encodeHeader(const LogHeader& h);
 LogHeader decodeHeader(std::span<const std::uint8_t> payload);  // throws FormatError
 // The run the header describes; throws FormatError when the embedded board does not read back

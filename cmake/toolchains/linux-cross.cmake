@@ -1,0 +1,11 @@
+# What every Linux cross target shares (docs/determinism.md, "Adding a target"). The target's own
+# file sets GIZMO_CROSS_TRIPLE (the compiler's prefix), GIZMO_MULTIARCH (Debian's folder for the
+# target's libraries, /usr/lib/GIZMO_MULTIARCH) and GIZMO_QEMU, then includes this one.
+set(CMAKE_SYSTEM_NAME Linux)
+set(CMAKE_CXX_COMPILER ${GIZMO_CROSS_TRIPLE}-g++)
+# Debian's cross compilers search /usr/include and /usr/lib/TRIPLE themselves, so the target's
+# multiarch packages (libpugixml-dev:ARCH) and the header-only ones are found without a sysroot.
+set(CMAKE_LIBRARY_ARCHITECTURE ${GIZMO_MULTIARCH})
+# Programs built for the target run through qemu-user, with the target's C library from the cross
+# compiler's folder.
+set(CMAKE_CROSSCOMPILING_EMULATOR ${GIZMO_QEMU} -L /usr/${GIZMO_CROSS_TRIPLE})
