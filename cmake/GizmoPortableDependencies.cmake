@@ -2,6 +2,10 @@
 # multiarch libpugixml-dev:ARCH; scripts/setup-cross.sh installs it), and the header-only CLI11
 # and nlohmann-json, the same files for every target.
 find_package(pugixml QUIET)
+# A Linux cross target's command is linked statically (cmake/toolchains/linux-cross.cmake).
+if(CMAKE_CROSSCOMPILING AND NOT EMSCRIPTEN AND TARGET pugixml::static)
+  set_target_properties(pugixml::pugixml PROPERTIES INTERFACE_LINK_LIBRARIES pugixml::static)
+endif()
 if(NOT TARGET pugixml::pugixml)
   message(STATUS "gizmo: no pugixml for this target, so this build reads text boards only")
 endif()

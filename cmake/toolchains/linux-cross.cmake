@@ -6,6 +6,9 @@ set(CMAKE_CXX_COMPILER ${GIZMO_CROSS_TRIPLE}-g++)
 # Debian's cross compilers search /usr/include and /usr/lib/TRIPLE themselves, so the target's
 # multiarch packages (libpugixml-dev:ARCH) and the header-only ones are found without a sysroot.
 set(CMAKE_LIBRARY_ARCHITECTURE ${GIZMO_MULTIARCH})
-# Programs built for the target run through qemu-user, with the target's C library from the cross
-# compiler's folder.
+# Programs built for the target run through qemu-user (-L: the cross compiler's folder as the
+# target's root). They are linked statically: dynamically linked, the cross compiler's loader
+# (Debian's libc6-ARCH-cross) met the C library of the multiarch packages (libc6:ARCH, a newer
+# revision) and s390x programs died at start ("stack smashing detected").
 set(CMAKE_CROSSCOMPILING_EMULATOR ${GIZMO_QEMU} -L /usr/${GIZMO_CROSS_TRIPLE})
+set(CMAKE_EXE_LINKER_FLAGS_INIT -static)

@@ -140,6 +140,17 @@ void resealFrame(Bytes& b, std::size_t frameAt) {
   putU64(b, frameAt + kFrameHeaderSize + length, checksum64(payload, (std::uint64_t(b.at(frameAt)) << 32) | length));
 }
 
+// The log with its header frame's payload replaced by h's encoding, which must have the same size,
+// framed again with a correct checksum: every byte checks.
+Bytes withHeader(const Bytes& log, const LogHeader& h) {
+  const Bytes payload = encodeHeader(h);
+  EXPECT_EQ(payload.size(), readU32(log, kFileHeaderSize + 1)) << "the edited header must keep its size";
+  Bytes edited = log;
+  std::copy(payload.begin(), payload.end(), edited.begin() + std::ptrdiff_t(kFileHeaderSize + kFrameHeaderSize));
+  resealFrame(edited, kFileHeaderSize);
+  return edited;
+}
+
 // The end of the header frame (where the first chunk starts) and the index frame's offset, read
 // from the bytes as docs/replay-format.md lays them out.
 std::uint64_t headerFrameEnd(const Bytes& b) {
@@ -310,13 +321,7 @@ TEST(ReplayLog, ReplayFindsTheFirstDecisionThatDiffers) {
   LogHeader h = decodeHeader(original.reader.headerPayload());
   const double recordedTime = h.keys[0].time;
   h.keys[0].time = recordedTime - 0.01;  // still inside the same tick for flippers.keys (0.10 → 0.09)
-  const Bytes payload = encodeHeader(h);
-  ASSERT_EQ(payload.size(), original.reader.headerPayload().size()) << "a key's time is a fixed 8 bytes";
-  Bytes tampered = rec.bytes;
-  std::copy(payload.begin(), payload.end(), tampered.begin() + std::ptrdiff_t(kFileHeaderSize + kFrameHeaderSize));
-  resealFrame(tampered, kFileHeaderSize);
-
-  const OpenedLog log = openBytes(tampered);  // every checksum holds
+  const OpenedLog log = openBytes(withHeader(rec.bytes, h));  // a key's time is a fixed 8 bytes
   ASSERT_EQ(log.request.keys.size(), original.request.keys.size());
   EXPECT_EQ(log.request.keys[0].time, recordedTime - 0.01);
   const ReplayReport report = replayLog(log);
@@ -350,13 +355,7 @@ TEST(ReplayLog, AHeaderFromAnotherVersionIsNoted) {
   LogHeader h = decodeHeader(original.reader.headerPayload());
   ASSERT_FALSE(h.toolkit.empty());
   h.toolkit = std::string(h.toolkit.size(), '9');
-  const Bytes payload = encodeHeader(h);
-  ASSERT_EQ(payload.size(), original.reader.headerPayload().size());
-  Bytes tampered = rec.bytes;
-  std::copy(payload.begin(), payload.end(), tampered.begin() + std::ptrdiff_t(kFileHeaderSize + kFrameHeaderSize));
-  resealFrame(tampered, kFileHeaderSize);
-
-  const OpenedLog log = openBytes(tampered);
+  const OpenedLog log = openBytes(withHeader(rec.bytes, h));
   for (const ReplayMethod method : {ReplayMethod::Digests, ReplayMethod::Records}) {
     const ReplayReport report = replayLog(log, method);
     EXPECT_TRUE(report.identical) << describe(report);
@@ -374,13 +373,7 @@ TEST(ReplayLog, ALogOfAnotherScalarFormatIsRefused) {
   LogHeader h = decodeHeader(original.reader.headerPayload());
   ASSERT_EQ(h.format, "binary64");
   h.format = "binary32";  // the same length, so the frame keeps its size
-  const Bytes payload = encodeHeader(h);
-  ASSERT_EQ(payload.size(), original.reader.headerPayload().size());
-  Bytes tampered = rec.bytes;
-  std::copy(payload.begin(), payload.end(), tampered.begin() + std::ptrdiff_t(kFileHeaderSize + kFrameHeaderSize));
-  resealFrame(tampered, kFileHeaderSize);
-
-  const OpenedLog log = openBytes(tampered);
+  const OpenedLog log = openBytes(withHeader(rec.bytes, h));
   const std::string replayed = messageOf([&] { (void)replayLog(log); });
   EXPECT_TRUE(contains(replayed, "binary32") && contains(replayed, "binary64") && contains(replayed, "formats differ"))
       << replayed;
