@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -22,6 +21,7 @@
 #include <utility>
 
 #include "exact_dyadic.hpp"
+#include "gizmo/core/decimal_text.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
 
 namespace gizmo {
@@ -44,12 +44,9 @@ using Exact = detail::ExactDyadic;
 
 // A number for a message: plain decimal digits unless the magnitude is extreme; never rounded.
 std::string number(double v) {
-  char buf[512];
   const double a = std::fabs(v);
   const bool plain = v == 0 || (a >= 1e-4 && a < 1e15);
-  const auto r = plain ? std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed)
-                       : std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
+  return plain ? shortestFixedDecimal(v) : shortestDecimal(v);
 }
 
 // A name in quotes, cut short when it is very long.
