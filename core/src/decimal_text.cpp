@@ -100,15 +100,15 @@ std::string shortestDecimal(double v) {
 std::string shortestFixedDecimal(double v) { return fixedText(v, shortestDigits(v)); }
 
 // The text is a decimal number already (the readers check its syntax first); strtod reads it as
-// from_chars would, and reports a result it cannot hold with ERANGE, as libstdc++'s from_chars
-// (which calls strtod) reports result_out_of_range.
+// from_chars would. Both call a number out of range when it overflows or rounds to zero; strtod
+// also sets ERANGE for a subnormal result, which from_chars returns.
 DecimalParse parseDecimalDouble(std::string_view text, double& value) {
   const std::string copy(text);
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(copy.c_str(), &end);
   if (copy.empty() || end != copy.c_str() + copy.size()) return DecimalParse::Malformed;
-  if (errno == ERANGE) return DecimalParse::OutOfRange;
+  if (errno == ERANGE && (v == 0 || std::isinf(v))) return DecimalParse::OutOfRange;
   value = v;
   return DecimalParse::Ok;
 }
