@@ -494,7 +494,7 @@ void GameBoard<Real>::gatherCandidates(GizmoId ballId, std::vector<GizmoId>& out
   // counts, as in overlaps()). Most predictions of a ball away from the edges need no pair with
   // them, on the spec example as on a crowded board.
   const Real zero(0), side(kBoardSize);
-  if (bool(box.lo.x <= zero) | bool(box.lo.y <= zero) | bool(side <= box.hi.x) | bool(side <= box.hi.y))
+  if ((int(box.lo.x <= zero) | int(box.lo.y <= zero) | int(side <= box.hi.x) | int(side <= box.hi.y)) != 0)
     candidateSet_.insert(outerWallsId());
   const CellRange c = cellsOf(box);
   for (int y = c.y0; y <= c.y1; ++y)

@@ -78,10 +78,11 @@ std::optional<Real> segmentTimeOfImpact(const Trajectory<Real>& t, const Real& r
   // Cheap rejection: the gap cannot close within the limit (it only grows, or it is wider than
   // the most the motion can close: |c1| limit + |c2| limit²). Both tests are evaluated and
   // joined without branches: most segments of a shape are rejected, so the one branch left is
-  // predictable, where one per comparison was not.
-  const bool opening = bool(Real(0) < c[0]) & bool(Real(0) <= c[1]) & bool(Real(0) <= c[2]);
+  // predictable, where one per comparison was not. (As ints: clang warns of a bitwise & between
+  // bools whose operands call functions, here std::array's operator[].)
+  const bool opening = (int(Real(0) < c[0]) & int(Real(0) <= c[1]) & int(Real(0) <= c[2])) != 0;
   const bool outOfReach = absOf(c[1]) * limit + absOf(c[2]) * limit * limit < c[0];
-  if (opening | outOfReach) return std::nullopt;
+  if ((int(opening) | int(outOfReach)) != 0) return std::nullopt;
   // The contact point must lie on the segment; at either end it must also be moving onto it
   // (a ball leaving over an end meets that end's vertex instead, not the edge again).
   auto onSegment = [&](const Real& tau) {
