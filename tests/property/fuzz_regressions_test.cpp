@@ -96,5 +96,23 @@ TEST(FuzzRegressions, ABallJammedOntoABallThatTheFloorHoldsRestsOnIt) {
   EXPECT_TRUE(run.violations.empty()) << firstViolation(run);
 }
 
+// Campaign seed 20261203, case 1495 (shrunk): in the classic model a ball at rest hangs under a
+// right flipper's side at its pivot. A key starts the swing, and the side, turning into the ball,
+// presses it only through the gap's curvature (its first-order closing is zero there) while
+// gravity pulls the ball away. The hit reflected a normal speed of zero, so nothing changed; the
+// flipper, triggered by its own hit, turned back and then forward again at t = 0, a million times.
+TEST(FuzzRegressions, AFlipperTurningIntoABallThatHangsUnderItInTheClassicModelStrikesIt) {
+  BoardSpec board = test::emptyBoard(1000);
+  board.balls.push_back(ballAt("B22", 1.25, 10.75));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G11", 1, 10, 270));
+  board.connections.push_back(ConnectSpec{"G11", "G11", {}});
+  board.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Up, "G11", {}});
+  RunRequest run = ballisticRun(board, 0.01, 0.007963735698682646);
+  run.model = MotionModel::Classic;
+  run.keys.push_back(TimedKey{0, 32, KeyDirection::Up});
+  const InvariantRun result = checkInvariants<double>(run, {std::begin(kAllInvariants), std::end(kAllInvariants)});
+  EXPECT_TRUE(result.violations.empty()) << firstViolation(result);
+}
+
 }  // namespace
 }  // namespace gizmo::verify::fuzz

@@ -190,8 +190,15 @@ class Ball final : public AbstractGizmo<Real> {
     // prediction a rounding error ahead of the present (a time that rounds to now) lands.
     if (!(closing < Real(0)) && !(closing < params.restSpeed && Real(dot(a_, n) + surfaceBend) < Real(0))) return false;
     // Pressed by what actually accelerates the ball: gravity, less what a surface it slides on
-    // takes (sliding down an incline presses it into whatever stands at the bottom).
-    const bool pressed = Real(dot(effectiveGravity(params), n) + surfaceBend) < Real(0);
+    // takes (sliding down an incline presses it into whatever stands at the bottom). A ball let
+    // in above while not approaching at all is pressed by definition: only the gap's curvature
+    // closes it. (In the classic model the path has no acceleration, so that curvature is a
+    // flipper turning into the ball, which gravity may pull the other way. Reflected, such a
+    // still or opening ball would keep its normal speed or be turned into the flipper: nothing
+    // would part them, and a flipper triggered by its own hit restarted its swing against the
+    // ball at one instant for ever; campaign seed 20261203, case 1495.)
+    const bool pressed =
+        !(closing < Real(0)) || Real(dot(effectiveGravity(params), n) + surfaceBend) < Real(0);
     const bool jammed = board.jammed();
     if (pressed && -closing < params.restSpeed) {
       if (type == SurfaceType::StaticSegment && surface) {
