@@ -45,6 +45,28 @@ TEST(ModelsAgreeComparison, AnExtraHitCountsUnlessItChangedNothing) {
   EXPECT_FALSE(compareModelDecisions(classic, longer).holds);
 }
 
+TEST(ModelsAgreeComparison, AnExtraHitThatChangedNothingButFiredATriggerPartsTheRuns) {
+  // A ball at rest to within rounding touches a flipper (gizmo 2) in one model, firing its
+  // trigger, and another surface in the other; the trigger's consequences come after.
+  const std::vector<PhysicalDecision> classic{hit("collision a=1 b=9", 0.5, -2), hit("collision a=6 b=9", 0.5, 1e-13, true),
+                                              hit("collision a=3 b=8", 0.6, 3)};
+  // (The trigger and its action are reported while the hit runs, before it.)
+  const PhysicalDecision trigger{"trigger 2 -> 7", -1, 0.5, {}}, action{"action 7", -1, 0.5, {}};
+  const std::vector<PhysicalDecision> ballistic{hit("collision a=1 b=9", 0.5, -2), trigger, action,
+                                                hit("collision a=2 b=9", 0.5, 1e-13, true), hit("collision a=3 b=8", 0.61, 3)};
+  EXPECT_TRUE(compareModelDecisions(classic, ballistic).holds);
+  EXPECT_TRUE(compareModelDecisions(ballistic, classic).holds);
+  // A trigger fired at another time is not that hit's: the extra trigger is a different decision.
+  std::vector<PhysicalDecision> later = ballistic;
+  later[1].time = 0.45;
+  later[2].time = 0.45;
+  EXPECT_FALSE(compareModelDecisions(classic, later).holds);
+  // Nor does a hit that changed a velocity count as rounding's.
+  std::vector<PhysicalDecision> real = ballistic;
+  real[3].negligible = false;
+  EXPECT_FALSE(compareModelDecisions(classic, real).holds);
+}
+
 TEST(ModelsAgreeComparison, ExclusiveDecisionsWithinTheTimeToleranceAreANearTie) {
   const std::vector<PhysicalDecision> classic{hit("captured 5 9", 0.5, 0)};
   const std::vector<PhysicalDecision> ballistic{hit("collision a=3 b=9", 0.5 + 1e-16, -1)};
