@@ -4,6 +4,7 @@
 // which moves balls in straight lines and applies gravity in tick()).
 #include <limits>
 #include <optional>
+#include <vector>
 
 #include "gizmo/core/geometry/features.hpp"
 #include "gizmo/core/geometry/time_of_impact.hpp"
@@ -105,7 +106,7 @@ class Ball final : public AbstractGizmo<Real> {
                                                   const PhysicsParams<Real>&) const override {
     const Ball* b = other.asBall();
     if (!b || captured_ || b->captured()) return std::nullopt;
-    const bool grazedNow = grazed_ && grazed_->other == b->id() && grazed_->time == now;
+    const bool grazedNow = metWhileJammed(b->id(), now, JamMeeting::Graze);
     const std::optional<Real> tau =
         ballTimeOfImpact(trajectoryAt(now), b->trajectoryAt(now), radius(), limit - now, grazedNow);
     if (!tau) return std::nullopt;
@@ -140,10 +141,25 @@ class Ball final : public AbstractGizmo<Real> {
       // They are let through for this instant (overlapping by a rounding error at most) and the
       // pair looks for its next contact after it, which it finds only if the gap opens first:
       // a pair curving together would sink into each other unseen (seed 2024, case 85).
-      grazed_ = Graze{b->id(), now};
-      b->grazed_ = Graze{this->id(), now};
+      rememberJamMeeting(b->id(), now, JamMeeting::Graze);
+      b->rememberJamMeeting(this->id(), now, JamMeeting::Graze);
       board.reportRule(ModelRule::Jammed, this->id(), b->id());
       return;
+    }
+    if (jammed) {
+      // Struck again at the instant of its last jammed hit: something else pushed one of the
+      // two straight back into the other, so they are wedged between other surfaces. Solved
+      // pairwise, such a chain (a wall, a ball, a ball, a wall) passes a sliver of velocity
+      // back and forth and converges only after ~1/θ² rounds for a line of centres tilted by θ
+      // (3.8·10⁻⁵ rad, seven hundred million rounds; campaign seed 20261203, case 4731): both
+      // come to rest instead, as jammed balls that gravity presses together do.
+      if (metWhileJammed(b->id(), now, JamMeeting::Hit)) {
+        comeToRest(board, b->id());
+        b->comeToRest(board, this->id());
+        return;
+      }
+      rememberJamMeeting(b->id(), now, JamMeeting::Hit);
+      b->rememberJamMeeting(this->id(), now, JamMeeting::Hit);
     }
     Real exchange = -closing;  // added to a along n, taken from b
     const bool pressedTogether =
@@ -368,16 +384,18 @@ class Ball final : public AbstractGizmo<Real> {
     auto& r = out.reals;
     auto& i = out.ints;
     r.insert(r.end(), {t0_, p0_.x, p0_.y, v0_.x, v0_.y, a_.x, a_.y});
-    i.insert(i.end(), {captured_, wedged_, nextFrictionIndex, contact_.has_value(), grazed_.has_value()});
+    i.insert(i.end(), {captured_, wedged_, nextFrictionIndex, contact_.has_value(), std::int64_t(jamMeetings_.size())});
     if (contact_) {
       const SegmentFeature<Real>& g = contact_->segment;
       i.insert(i.end(), {contact_->gizmo, contact_->feature});
       r.insert(r.end(), {g.a.x, g.a.y, g.b.x, g.b.y, g.normal.x, g.normal.y, g.direction.x, g.direction.y, g.length,
                          contact_->coefficient});
     }
-    if (grazed_) {
-      i.push_back(grazed_->other);
-      r.push_back(grazed_->time);
+    // A graze is written as the other ball's id, a hit as -1 - id: a state without hits has
+    // the bytes it had before hits were remembered.
+    for (const JamMeeting& m : jamMeetings_) {
+      i.push_back(m.kind == JamMeeting::Graze ? std::int64_t(m.other) : -1 - std::int64_t(m.other));
+      r.push_back(m.time);
     }
   }
 
@@ -393,7 +411,10 @@ class Ball final : public AbstractGizmo<Real> {
     captured_ = in.flag();
     wedged_ = in.flag();
     nextFrictionIndex = in.integer(0, std::numeric_limits<std::int64_t>::max());
-    const bool hasContact = in.flag(), hasGraze = in.flag();
+    const bool hasContact = in.flag();
+    // Each meeting is one integer and one real, so a count larger than the state holds fails
+    // on reading them rather than allocating for it.
+    const std::int64_t meetingCount = in.integer(0, std::numeric_limits<std::int32_t>::max());
     contact_.reset();
     if (hasContact) {
       SurfaceContact<Real> c;
@@ -409,11 +430,14 @@ class Ball final : public AbstractGizmo<Real> {
       c.coefficient = in.real();
       contact_ = c;
     }
-    grazed_.reset();
-    if (hasGraze) {
-      const GizmoId other = static_cast<GizmoId>(in.integer(0, std::numeric_limits<GizmoId>::max()));
-      if (!ids.isBall(other)) throw StateError("ball graze: not a ball");
-      grazed_ = Graze{other, in.real()};
+    jamMeetings_.clear();
+    for (std::int64_t k = 0; k < meetingCount; ++k) {
+      constexpr std::int64_t most = std::numeric_limits<GizmoId>::max();
+      const std::int64_t written = in.integer(-1 - most, most);
+      const bool graze = written >= 0;
+      const GizmoId other = static_cast<GizmoId>(graze ? written : -1 - written);
+      if (!ids.isBall(other)) throw StateError("ball jam meeting: not a ball");
+      jamMeetings_.push_back(JamMeeting{other, in.real(), graze ? JamMeeting::Graze : JamMeeting::Hit});
     }
   }
 
@@ -423,12 +447,28 @@ class Ball final : public AbstractGizmo<Real> {
   bool captured_ = false;
   bool wedged_ = false;
   std::optional<SurfaceContact<Real>> contact_;
-  // A jammed graze let through at `time` with ball `other` (see collide).
-  struct Graze {
+  // The jammed meetings of the latest instant that had any, one per other ball: grazes let
+  // through (see collide), whose pair must skip its contact at that instant, and hits. In a pile
+  // a ball can graze several balls at one instant; with one remembered graze, the second
+  // overwrote the first, whose pair then predicted its contact at that instant again, grazed
+  // again and overwrote the other in turn, a million times (campaign seed 20261203, case 4731).
+  struct JamMeeting {
+    enum Kind : std::uint8_t { Graze, Hit };
     GizmoId other;
     Real time;
+    Kind kind;
   };
-  std::optional<Graze> grazed_;
+  std::vector<JamMeeting> jamMeetings_;
+
+  bool metWhileJammed(GizmoId other, const Real& t, typename JamMeeting::Kind kind) const {
+    for (const JamMeeting& m : jamMeetings_)
+      if (m.other == other && m.time == t && m.kind == kind) return true;
+    return false;
+  }
+  void rememberJamMeeting(GizmoId other, const Real& t, typename JamMeeting::Kind kind) {
+    if (!jamMeetings_.empty() && !(jamMeetings_.front().time == t)) jamMeetings_.clear();  // an earlier instant's
+    if (!metWhileJammed(other, t, kind)) jamMeetings_.push_back(JamMeeting{other, t, kind});
+  }
 };
 
 }  // namespace gizmo
