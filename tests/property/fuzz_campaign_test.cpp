@@ -7,6 +7,7 @@
 #include <iterator>
 
 #include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/replay/replay.hpp"
 #include "gizmo/verify/fuzz/campaign.hpp"
 #include "gizmo/verify/fuzz/run_generator.hpp"
 #include "gizmo/verify/fuzz/run_shrinker.hpp"
@@ -102,19 +103,26 @@ TEST(FuzzCampaign, ResultsCutShortOrStoppedEarlyAreNotWhole) {
   std::filesystem::remove_all(dir);
 }
 
-// A failure's folder: the shrunk board, its key script, its log, what failed, and the command
-// that checks it again; and results.txt names the folder and reads back.
-TEST(FuzzCampaign, WritesEachFailureWithItsCommand) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gizmo-fuzz-failure-test";
-  std::filesystem::remove_all(dir);
+// A campaign of one case, 0 of seed 4, whose energy property failed (made up), shaped by `adjust`.
+template <class Adjust>
+CampaignResult oneMadeUpFailure(Adjust adjust) {
   CampaignResult r;
   r.seed = 4, r.count = 1, r.properties = "energy", r.shardsIncluded = {0};
   CaseOutcome c;
   c.index = 0, c.seed = caseSeed(4, 0), c.size = 0, c.property = "energy", c.holds = false;
   c.message = "made up for the test";
   c.minimal = caseRun(4, 0);
-  c.minimal.keys = {TimedKey{0.1, 32, KeyDirection::Down}};
+  adjust(c);
   r.outcomes.push_back(c);
+  return r;
+}
+
+// A failure's folder: the shrunk board, its key script, its log, what failed, and the command
+// that checks it again; and results.txt names the folder and reads back.
+TEST(FuzzCampaign, WritesEachFailureWithItsCommand) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gizmo-fuzz-failure-test";
+  std::filesystem::remove_all(dir);
+  CampaignResult r = oneMadeUpFailure([](CaseOutcome& c) { c.minimal.keys = {TimedKey{0.1, 32, KeyDirection::Down}}; });
   writeCampaign(r, dir.string(), "gizmo");
   const std::filesystem::path folder = dir / "failures" / "energy-case0";
   EXPECT_EQ(r.outcomes[0].folder, "failures/energy-case0");
@@ -130,6 +138,31 @@ TEST(FuzzCampaign, WritesEachFailureWithItsCommand) {
   EXPECT_FALSE(back.outcomes[0].holds);
   EXPECT_EQ(back.outcomes[0].folder, "failures/energy-case0");
   EXPECT_EQ(summaryLine(back), summaryLine(r));
+  std::filesystem::remove_all(dir);
+}
+
+// A failure seen at a known time keeps a log of the run up to the end of that tick only: a late
+// failure in a crowded run would otherwise write hundreds of megabytes.
+TEST(FuzzCampaign, AFailuresLogEndsWithTheTickOfTheFailure) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gizmo-fuzz-failure-cut-test";
+  std::filesystem::remove_all(dir);
+  CampaignResult r = oneMadeUpFailure([](CaseOutcome& c) {
+    c.minimal.duration = 1;
+    c.minimal.maxTick = 0.05;
+    c.failedAt = 0.42;
+  });
+  writeCampaign(r, dir.string(), "gizmo");
+  const std::filesystem::path folder = dir / "failures" / "energy-case0";
+  const replay::OpenedLog log = replay::openLog((folder / "run.gzlog").string());
+  EXPECT_EQ(log.request.duration, 0.45);
+  std::ifstream in(folder / "failure.txt");
+  const std::string failure((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(failure.find("run.gzlog holds the run up to t = 0.45"), std::string::npos) << failure;
+  // The check it names is still the whole run's.
+  std::ifstream command(folder / "command.txt");
+  std::string line;
+  std::getline(command, line);
+  EXPECT_NE(line.find("--time 1"), std::string::npos) << line;
   std::filesystem::remove_all(dir);
 }
 

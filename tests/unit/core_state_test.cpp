@@ -75,6 +75,31 @@ TEST(SavedState, RunLimitStopsBeforeTheFirstLaterEvent) {
   EXPECT_EQ(counted->executedTotal(), 77u);
 }
 
+// A run cut at the end of the tick that holds a time decides, up to there, exactly as the whole
+// run does (a fuzz failure's log is such a cut).
+TEST(SavedState, ARunCutAtATicksEndIsAPrefixOfTheWholeRun) {
+  for (MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
+    const RunRequest whole = requestFor(4, model);
+    test::DecisionTrace<double> all;
+    simulate<double>(whole, &all);
+    for (double t : {0.0, 0.05, 3.3, 3.3000000000000003, 7.9}) {
+      const RunRequest cut = runThroughTickAt(whole, t);
+      EXPECT_GE(cut.duration, t);
+      if (t > 0)
+        EXPECT_LT(cut.duration - whole.maxTick, t) << "not the tick that holds " << t;
+      else
+        EXPECT_EQ(cut.duration, whole.maxTick) << "the first tick holds the events at 0";
+      test::DecisionTrace<double> part;
+      simulate<double>(cut, &part);
+      ASSERT_LT(part.decisions.size(), all.decisions.size()) << "t = " << t;
+      for (std::size_t i = 0; i < part.decisions.size(); ++i)
+        ASSERT_EQ(part.decisions[i], all.decisions[i]) << "t = " << t << ", decision " << i;
+    }
+    EXPECT_EQ(runThroughTickAt(whole, whole.duration).duration, whole.duration);
+    EXPECT_EQ(runThroughTickAt(whole, 9).duration, whole.duration);
+  }
+}
+
 // Each broken state names what is wrong with it.
 TEST(SavedState, RestoringRefusesStatesThatDoNotFit) {
   const RunRequest request = requestFor(5, MotionModel::Ballistic);

@@ -60,6 +60,13 @@ std::string quoted(const std::string& s) {
   return q + "'";
 }
 
+// failure.txt's word on run.gzlog when the log stops before the run's end.
+std::string logExtent(const RunRequest& run, const RunRequest& logged) {
+  if (logged.duration == run.duration) return "";
+  return "\nrun.gzlog holds the run up to t = " + shortest(logged.duration) +
+         ", the end of the tick in which it failed; the run goes on to t = " + shortest(run.duration) + ".\n";
+}
+
 }  // namespace
 
 int caseSize(std::uint64_t index) { return int(index % std::uint64_t(kMaxSize + 1)); }
@@ -113,7 +120,9 @@ CampaignResult runCampaign(const CampaignOptions& o) {
               minimise(run, [&](const RunRequest& candidate) { return !checkSafely(*p, candidate).holds; }, o.shrinkBudget);
           c.minimal = m.run;
           c.shrinkSteps = m.steps;
-          c.message = checkSafely(*p, m.run).message;
+          const PropertyResult minimal = checkSafely(*p, m.run);
+          c.message = minimal.message;
+          c.failedAt = minimal.failedAt;
         }
         slots[slot].push_back(std::move(c));
       }
@@ -192,9 +201,12 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
       if (ec) throw CampaignError("cannot create " + folder.string() + ": " + ec.message());
       writeFile(folder / "board.xml", io::writeXmlBoard(c.minimal.board));
       writeFile(folder / "keys.txt", writeKeyScript(c.minimal.keys));
+      // The log goes as far as the failure's tick: a failure late in a long run of a crowded
+      // board would otherwise write hundreds of megabytes that no one needs.
+      const RunRequest logged = c.failedAt ? runThroughTickAt(c.minimal, *c.failedAt) : c.minimal;
       try {
         replay::LogWriter log((folder / "run.gzlog").string());
-        replay::recordRun(c.minimal, PrecisionChoice{Precision::Double, 0}, log);
+        replay::recordRun(logged, PrecisionChoice{Precision::Double, 0}, log);
       } catch (const std::exception& e) {
         throw CampaignError("cannot record " + (folder / "run.gzlog").string() + ": " + e.what());
       }
@@ -207,7 +219,7 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
       writeFile(folder / "failure.txt", "property " + c.property + ", case " + std::to_string(c.index) + " (seed " +
                                             hex(c.seed) + ", size " + std::to_string(c.size) + "), shrunk in " +
                                             std::to_string(c.shrinkSteps) + " steps\n" + c.message + "\n\n" +
-                                            describeRun(c.minimal));
+                                            describeRun(c.minimal) + logExtent(c.minimal, logged));
     }
     results << "case " << c.index << ' ' << hex(c.seed) << ' ' << c.size << ' ' << c.property << ' '
             << (c.holds ? "holds" : "fails") << ' ' << hex(c.fingerprint) << ' ' << (c.holds ? "-" : c.folder) << "\n";

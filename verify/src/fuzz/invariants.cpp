@@ -128,7 +128,7 @@ template <class Real>
 void InvariantChecker<Real>::fail(Invariant i, const std::string& message) {
   for (const Violation& v : violations_)
     if (v.invariant == i) return;  // the first one says it; the rest follow from it
-  violations_.push_back(Violation{i, message});
+  violations_.push_back(Violation{i, message, toDouble(board_.now())});
 }
 
 template <class Real>

@@ -41,7 +41,7 @@ PropertyResult fromInvariant(const RunRequest& run, Invariant which) {
   d.add(r.events);
   d.add(r.energy);
   if (r.violations.empty()) return PropertyResult{true, "", d.h};
-  return PropertyResult{false, r.violations.front().message, d.h};
+  return PropertyResult{false, r.violations.front().message, d.h, r.violations.front().time};
 }
 
 PropertyResult noTunnelling(const RunRequest& run) { return fromInvariant(run, Invariant::NoTunnelling); }

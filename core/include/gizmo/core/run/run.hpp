@@ -3,6 +3,7 @@
 // and how long to simulate. The same function serves the command line, the tests and the
 // benchmarks.
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,22 @@ std::unique_ptr<GameBoard<Real>> prepareRun(const RunRequest& request) {
 template <class Real>
 void continueRun(GameBoard<Real>& board, const RunRequest& request, std::int64_t ticksDone) {
   board.tickSpan(Real(0), ticksDone + 1, fromDouble<Real>(request.duration));
+}
+
+// The same run cut at the end of the tick that holds time t: every decision up to that tick's end
+// is the one the whole run makes, since ticks are counted from the start (k times the maximum
+// tick) and only the last one is cut short. Tick k holds the events at its end, k·maxTick (the
+// end-of-tick event runs last of its instant), and the first tick holds those at 0. A t at or
+// past the end leaves the run whole.
+inline RunRequest runThroughTickAt(const RunRequest& request, double t) {
+  RunRequest cut = request;
+  if (!(request.maxTick > 0) || !(t < request.duration)) return cut;
+  double k = t > 0 ? std::floor(t / request.maxTick) : 0;  // then the first k with k·maxTick ≥ t, as tickSpan computes it
+  while (k * request.maxTick < t) k += 1;
+  while (k > 1 && !((k - 1) * request.maxTick < t)) k -= 1;
+  if (k < 1) k = 1;
+  if (k * request.maxTick < request.duration) cut.duration = k * request.maxTick;
+  return cut;
 }
 
 // Builds the board, schedules the keys, simulates request.duration seconds and summarizes.

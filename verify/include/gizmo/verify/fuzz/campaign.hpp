@@ -6,6 +6,7 @@
 // order. Merging the shards' result folders gives what one unsharded run gives.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,6 +41,7 @@ struct CaseOutcome {
   std::string message;     // for the minimal run
   RunRequest minimal;
   std::size_t shrinkSteps = 0;
+  std::optional<double> failedAt = std::nullopt;  // when the minimal run failed, where the property says
   std::string folder;      // where its files are, relative to the campaign's folder (once written)
 };
 

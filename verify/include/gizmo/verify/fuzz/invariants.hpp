@@ -35,6 +35,7 @@ std::string_view invariantName(Invariant i);
 struct Violation {
   Invariant invariant = Invariant::EventQueue;
   std::string message;  // what broke, when, with exact values (hex floats)
+  double time = 0;      // the board time at which it was seen
 };
 
 // How far rounding may carry a run past the exact model, per scalar: `overlap` in L (a ball's

@@ -2,6 +2,7 @@
 // The properties that `gizmo fuzz` and the property tests check on generated runs, by name. Each
 // takes one run and says whether it holds, and if not, why (with exact values).
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -15,6 +16,9 @@ struct PropertyResult {
   bool holds = true;
   std::string message;          // why not, when it does not hold
   std::uint64_t fingerprint = 0;  // a digest of what the check saw: equal runs, equal fingerprints
+  // The board time by which it was seen not to hold, where the property can say (the
+  // invariants); a failure's log need not go further than the tick that holds it.
+  std::optional<double> failedAt = std::nullopt;
 };
 
 struct Property {
