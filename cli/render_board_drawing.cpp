@@ -14,6 +14,7 @@ const char* typeName(GizmoType type) {
     case GizmoType::LeftFlipper: return "left-flipper";
     case GizmoType::RightFlipper: return "right-flipper";
     case GizmoType::Absorber: return "absorber";
+    case GizmoType::Booster: return "booster";
   }
   return "square";
 }

@@ -175,7 +175,7 @@
   const SECOND_RUN = "#ff8c42";
   const PATH_COLOUR = "#40c4ff";
   const PARTING_COLOUR = "#ff3b3b";
-  const GIZMO_FILL = { square: "#d9534f", triangle: "#3e7cd6", circle: "#3fae5a", absorber: "#8e4aa3" };
+  const GIZMO_FILL = { square: "#d9534f", triangle: "#3e7cd6", circle: "#3fae5a", absorber: "#8e4aa3", booster: "#e0b830" };
 
   // ---- The player's state ---------------------------------------------------------------------
   const ui = {

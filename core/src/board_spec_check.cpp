@@ -35,6 +35,7 @@ const char* gizmoTypeWord(GizmoType type) {
     case GizmoType::LeftFlipper: return "left flipper";
     case GizmoType::RightFlipper: return "right flipper";
     case GizmoType::Absorber: return "absorber";
+    case GizmoType::Booster: return "booster";
   }
   return "gizmo";
 }

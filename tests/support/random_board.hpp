@@ -41,6 +41,11 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
     if (whole(0, 3) == 0)
       s.connections.push_back(ConnectSpec{g.name, s.gizmos[std::size_t(whole(0, int(s.gizmos.size()) - 1))].name, {}});
   }
+  // Half the triangles are boosters, chosen by a stream of their own so that the other draws
+  // stay as they were before the additions (docs/physics.md, "Gizmos other programs added").
+  std::mt19937_64 own(seed ^ 0x6164646974696f6eULL);
+  for (GizmoSpec& g : s.gizmos)
+    if (g.type == GizmoType::Triangle && own() % 2 == 0) g.type = GizmoType::Booster;
   const int balls = whole(1, 12);
   for (int i = 0; i < balls; ++i) {
     BallSpec b;

@@ -33,6 +33,7 @@ const char* xmlElement(GizmoType t) {
     case GizmoType::LeftFlipper: return "leftFlipper";
     case GizmoType::RightFlipper: return "rightFlipper";
     case GizmoType::Absorber: return "absorber";
+    case GizmoType::Booster: return "booster";
   }
   return "squareBumper";
 }
@@ -45,6 +46,7 @@ const char* textCommand(GizmoType t) {
     case GizmoType::LeftFlipper: return "LeftFlipper";
     case GizmoType::RightFlipper: return "RightFlipper";
     case GizmoType::Absorber: return "Absorber";
+    case GizmoType::Booster: return "Booster";
   }
   return "Square";
 }

@@ -267,6 +267,12 @@ void InvariantChecker<Real>::modelRuleApplied(const Real& time, ModelRule rule, 
   }
   // The documented minimum bounce: at most ½·restSpeed² per slow hit on something round.
   if (rule == ModelRule::MinimumBounce) allowance_ += params.restSpeed * params.restSpeed / Real(2);
+  // A booster doubles the speed it reports, reported before it does: the kinetic energy ½|v|²
+  // becomes ½|2v|², a rise of 3·½|v|².
+  if (rule == ModelRule::Boosted) {
+    const Vec2<Real> v = board_.gizmo(other).asBall()->velocityAt(time);
+    allowance_ += Real(3) * lengthSquared(v) / Real(2);
+  }
 }
 
 template <class Real>

@@ -4,6 +4,7 @@
 
 #include "gizmo/core/board/build_board.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
+#include "gizmo/core/gizmos/booster.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/polygonal_gizmo.hpp"
 
@@ -22,6 +23,9 @@ std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams
       case GizmoType::Circle:
       case GizmoType::Triangle:
         board->add(std::make_unique<GridBumper<Real>>(g));
+        break;
+      case GizmoType::Booster:
+        board->add(std::make_unique<Booster<Real>>(g));
         break;
       case GizmoType::LeftFlipper:
       case GizmoType::RightFlipper:
