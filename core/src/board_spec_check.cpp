@@ -36,6 +36,7 @@ const char* gizmoTypeWord(GizmoType type) {
     case GizmoType::RightFlipper: return "right flipper";
     case GizmoType::Absorber: return "absorber";
     case GizmoType::Booster: return "booster";
+    case GizmoType::Teleporter: return "teleporter";
   }
   return "gizmo";
 }

@@ -34,6 +34,7 @@ const char* xmlElement(GizmoType t) {
     case GizmoType::RightFlipper: return "rightFlipper";
     case GizmoType::Absorber: return "absorber";
     case GizmoType::Booster: return "booster";
+    case GizmoType::Teleporter: return "teleporter";
   }
   return "squareBumper";
 }
@@ -47,6 +48,7 @@ const char* textCommand(GizmoType t) {
     case GizmoType::RightFlipper: return "RightFlipper";
     case GizmoType::Absorber: return "Absorber";
     case GizmoType::Booster: return "Booster";
+    case GizmoType::Teleporter: return "Teleporter";
   }
   return "Square";
 }
@@ -78,6 +80,7 @@ std::string writeXmlBoard(const BoardSpec& board) {
         break;
       case GizmoType::Square:
       case GizmoType::Circle:
+      case GizmoType::Teleporter:
         if (g.orientation != 0) out += attr("orientation", std::to_string(g.orientation));
         break;
       default:

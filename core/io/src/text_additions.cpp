@@ -12,8 +12,6 @@ constexpr Addition kAdditions[] = {
     {"LeftSpinningFlipper", AdditionKind::Gizmo, "a spinning flipper", "lheckemann/gizmoball"},
     {"RightSpinningFlipper", AdditionKind::Gizmo, "a spinning flipper", "lheckemann/gizmoball"},
     {"Portal", AdditionKind::Gizmo, "a portal that moves a ball to its exit cell", "rgallagher27/308gizmoball"},
-    {"Teleporter", AdditionKind::Gizmo, "a teleporter that moves a ball to the one it is connected to",
-     "d-g-n/CS308-GizmoBall"},
     {"Accelerator", AdditionKind::Gizmo, "a bumper that speeds the ball up", "course variants"},
     {"DeathSquare", AdditionKind::Gizmo, "a square that stops the ball", "d-g-n/CS308-GizmoBall"},
     {"Spinner", AdditionKind::Gizmo, "a spinning bar", "d-g-n/CS308-GizmoBall, NiklavsM/Gizmoball"},

@@ -65,7 +65,7 @@ constexpr GizmoElement kGizmoElements[] = {
     {"squareBumper", GizmoType::Square},     {"circleBumper", GizmoType::Circle},
     {"triangleBumper", GizmoType::Triangle}, {"leftFlipper", GizmoType::LeftFlipper},
     {"rightFlipper", GizmoType::RightFlipper}, {"absorber", GizmoType::Absorber},
-    {"booster", GizmoType::Booster},
+    {"booster", GizmoType::Booster},       {"teleporter", GizmoType::Teleporter},
 };
 
 // " (did you mean <squareBumper>?)" when name differs from one of known only in case.

@@ -60,13 +60,25 @@ struct Builder {
   }
 
   // The additions of other programs (docs/physics.md, "Gizmos other programs added") take the
-  // place of gizmos of the same outline: half the triangles become boosters. The choice is drawn
+  // place of gizmos of the same outline: half the triangles become boosters, half the circles
+  // teleporters. The choice is drawn
   // from a stream of its own, so that every other draw, and every board without a triangle,
   // stays what it was before the additions.
   void additions(std::uint64_t seed) {
     SeededRandom own(seed ^ 0x6164646974696f6eULL);  // "addition"
     for (GizmoSpec& g : board.gizmos)
       if (g.type == GizmoType::Triangle && own.chance(2)) g.type = GizmoType::Booster;
+    // half the circles become teleporters, most of them with an exit (now and then themselves)
+    for (GizmoSpec& g : board.gizmos)
+      if (g.type == GizmoType::Circle && own.chance(2)) g.type = GizmoType::Teleporter;
+    std::vector<const GizmoSpec*> teleporters;
+    for (const GizmoSpec& g : board.gizmos)
+      if (g.type == GizmoType::Teleporter) teleporters.push_back(&g);
+    for (const GizmoSpec* from : teleporters)
+      if (!own.chance(5)) {
+        const GizmoSpec* to = teleporters[std::size_t(own.whole(0, int(teleporters.size()) - 1))];
+        board.connections.push_back(ConnectSpec{from->name, to->name, {}});
+      }
   }
 
   void connections() {

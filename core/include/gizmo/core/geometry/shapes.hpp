@@ -91,6 +91,7 @@ Shape<Real> restShape(const GizmoSpec& g) {
       break;
     }
     case GizmoType::Circle:
+    case GizmoType::Teleporter:
       s.circles.push_back(CircleFeature<Real>{at(0.5, 0.5), fromDouble<Real>(0.5)});
       break;
     case GizmoType::Absorber:
