@@ -14,6 +14,8 @@ const char* typeName(GizmoType type) {
     case GizmoType::LeftFlipper: return "left-flipper";
     case GizmoType::RightFlipper: return "right-flipper";
     case GizmoType::Absorber: return "absorber";
+    case GizmoType::Booster: return "booster";
+    case GizmoType::Teleporter: return "teleporter";
   }
   return "square";
 }
@@ -38,7 +40,7 @@ BoardDrawing drawingOf(const BoardSpec& board) {
       d.forwardSign = layout.forwardSign;
       d.length = kFlipperLength;
       d.radius = kFlipperRadius;
-    } else if (g.type == GizmoType::Circle) {
+    } else if (g.type == GizmoType::Circle || g.type == GizmoType::Teleporter) {
       d.centre = shape.circles.front().centre;
       d.radius = shape.circles.front().radius;
     } else {
@@ -61,7 +63,7 @@ nlohmann::ordered_json drawingJson(const BoardDrawing& drawing) {
       g["forward_sign"] = d.forwardSign;
       g["length"] = d.length;
       g["radius"] = d.radius;
-    } else if (d.type == GizmoType::Circle) {
+    } else if (d.type == GizmoType::Circle || d.type == GizmoType::Teleporter) {
       g["centre"] = point(d.centre);
       g["radius"] = d.radius;
     } else {

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "gizmo/core/gizmos/absorber.hpp"
+#include "gizmo/core/gizmos/teleporter.hpp"
 #include <stdexcept>
 
 namespace gizmo::cli {
@@ -55,6 +56,9 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     return it == ballIndex.end() ? nullptr : &builders[it->second];
   };
 
+  // A teleport is reported before its event's record, which gives the ball where it touched the
+  // teleporter: the ball is moved to the exit once that record is read.
+  std::map<GizmoId, const Teleporter<double>*> teleported;
   std::int64_t event = -1;
   auto note = [&](const replay::DecisionView& d, std::int32_t x, std::int32_t y) {
     if (event < 0) return;  // nothing reports before the first event
@@ -77,6 +81,12 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
         for (const replay::BallView& b : d->balls)
           if (BallPathBuilder* builder = builderOf(b.ball))
             builder->logged(event, now, vec(b.x, b.y), vec(b.vxBefore, b.vyBefore), vec(b.vx, b.vy));
+        for (const replay::BallView& b : d->balls)
+          if (const auto it = teleported.find(b.ball); it != teleported.end()) {
+            if (BallPathBuilder* builder = builderOf(b.ball))
+              builder->released(event, now, it->second->exitPosition(vec(b.x, b.y)), vec(b.vx, b.vy));
+            teleported.erase(it);
+          }
         if (d->kind == EventKind::Collision)
           for (const replay::BallView& b : d->balls) track.collisionPoints.push_back(vec(b.x, b.y));
         if (d->kind == EventKind::FlipperStop && flippers.count(d->a)) flippers[d->a].stopped(event, now);
@@ -93,6 +103,8 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
         if (d->rule == ModelRule::Captured && ball && hold.count(d->gizmo)) ball->captured(event, now, hold[d->gizmo]);
         if (d->rule == ModelRule::Released && ball && hold.count(d->gizmo))
           ball->released(event, now, hold[d->gizmo], Absorber<double>::fireVelocity());
+        if (d->rule == ModelRule::Teleported)
+          if (const auto* t = dynamic_cast<const Teleporter<double>*>(&board->gizmo(d->gizmo))) teleported[d->other] = t;
         if (d->rule == ModelRule::FlipperBlocked && flippers.count(d->gizmo)) flippers[d->gizmo].blocked(event, now);
         // Every friction tick implies its friction rule: noting it would only repeat the event.
         if (d->rule != ModelRule::FrictionApplied) note(*d, d->gizmo, d->other);

@@ -175,7 +175,8 @@
   const SECOND_RUN = "#ff8c42";
   const PATH_COLOUR = "#40c4ff";
   const PARTING_COLOUR = "#ff3b3b";
-  const GIZMO_FILL = { square: "#d9534f", triangle: "#3e7cd6", circle: "#3fae5a", absorber: "#8e4aa3" };
+  const GIZMO_FILL = { square: "#d9534f", triangle: "#3e7cd6", circle: "#3fae5a", absorber: "#8e4aa3", booster: "#e0b830",
+                       teleporter: "#2bb3c0" };
 
   // ---- The player's state ---------------------------------------------------------------------
   const ui = {
@@ -351,7 +352,7 @@
     }
     ctx.fillStyle = GIZMO_FILL[g.type] || "#888";
     ctx.beginPath();
-    if (g.type === "circle") ctx.arc(g.centre[0], g.centre[1], g.radius, 0, 2 * Math.PI);
+    if (g.type === "circle" || g.type === "teleporter") ctx.arc(g.centre[0], g.centre[1], g.radius, 0, 2 * Math.PI);
     else g.polygon.forEach((p, i) => (i ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
     ctx.closePath();
     ctx.fill();

@@ -35,6 +35,8 @@ const char* gizmoTypeWord(GizmoType type) {
     case GizmoType::LeftFlipper: return "left flipper";
     case GizmoType::RightFlipper: return "right flipper";
     case GizmoType::Absorber: return "absorber";
+    case GizmoType::Booster: return "booster";
+    case GizmoType::Teleporter: return "teleporter";
   }
   return "gizmo";
 }

@@ -2,6 +2,7 @@
 // Valid random boards from an explicit seed: gizmos of every kind and orientation without
 // overlap, balls at rest, crawling, ordinary and very fast, some placed exactly on cell tops so
 // that they start in contact, and triggers wired at random. Used by the soak tests.
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -40,6 +41,22 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
     if (whole(0, 2) == 0) s.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, g.name, {}});
     if (whole(0, 3) == 0)
       s.connections.push_back(ConnectSpec{g.name, s.gizmos[std::size_t(whole(0, int(s.gizmos.size()) - 1))].name, {}});
+  }
+  // Half the triangles are boosters and half the circles teleporters (each with an exit), chosen by a stream of their own so that the other draws
+  // stay as they were before the additions (docs/physics.md, "Gizmos other programs added").
+  std::mt19937_64 own(seed ^ 0x6164646974696f6eULL);
+  for (GizmoSpec& g : s.gizmos)
+    if (g.type == GizmoType::Triangle && own() % 2 == 0) g.type = GizmoType::Booster;
+  for (GizmoSpec& g : s.gizmos)
+    if (g.type == GizmoType::Circle && own() % 2 == 0) g.type = GizmoType::Teleporter;
+  std::vector<std::string> teleporters;
+  for (const GizmoSpec& g : s.gizmos)
+    if (g.type == GizmoType::Teleporter) teleporters.push_back(g.name);
+  for (const std::string& from : teleporters) {
+    const std::string& to = teleporters[own() % teleporters.size()];
+    const bool twice = std::any_of(s.connections.begin(), s.connections.end(),
+                                   [&](const ConnectSpec& c) { return c.source == from && c.target == to; });
+    if (!twice) s.connections.push_back(ConnectSpec{from, to, {}});
   }
   const int balls = whole(1, 12);
   for (int i = 0; i < balls; ++i) {

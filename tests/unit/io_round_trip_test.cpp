@@ -63,6 +63,7 @@ BoardSpec sampleBoard() {
   b.gizmos.push_back(GizmoSpec{GizmoType::Square, "S", 3, 3, 90, 1, 1, {}});
   b.gizmos.push_back(GizmoSpec{GizmoType::Absorber, "A", 0, 19, 0, 20, 1, {}});
   b.gizmos.push_back(GizmoSpec{GizmoType::LeftFlipper, "L", 10, 10, 270, 2, 2, {}});
+  b.gizmos.push_back(GizmoSpec{GizmoType::Booster, "U", 5, 5, 90, 1, 1, {}});
   b.connections.push_back(ConnectSpec{"S", "L", {}});
   b.connections.push_back(ConnectSpec{"OuterWalls", "A", {}});
   b.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Up, "L", {}});
@@ -83,6 +84,8 @@ TEST(BoardWriter, CanonicalText) {
             "Rotate L\n"
             "Rotate L\n"
             "Rotate L\n"
+            "Booster U 5 5\n"
+            "Rotate U\n"
             "Ball B 1.5 2.25 -3 0.1\n"
             "Connect S L\n"
             "Connect OuterWalls A\n"
@@ -99,6 +102,7 @@ TEST(BoardWriter, CanonicalXml) {
             "    <squareBumper name=\"S\" x=\"3\" y=\"3\" orientation=\"90\"/>\n"
             "    <absorber name=\"A\" x=\"0\" y=\"19\" width=\"20\" height=\"1\"/>\n"
             "    <leftFlipper name=\"L\" x=\"10\" y=\"10\" orientation=\"270\"/>\n"
+            "    <booster name=\"U\" x=\"5\" y=\"5\" orientation=\"90\"/>\n"
             "  </gizmos>\n"
             "  <connections>\n"
             "    <connect sourceGizmo=\"S\" targetGizmo=\"L\"/>\n"

@@ -210,6 +210,19 @@ TEST(TextReader, OuterWallsMayTrigger) {
   EXPECT_EQ(b.connections[0].source, "OuterWalls");
 }
 
+// d-g-n/CS308-GizmoBall writes its booster as NAME X Y, names starting with a digit, and turns
+// it with Rotate (its ballballcollisions.txt, lines 25-28): read as a booster without a warning.
+TEST(TextReader, BoostersAsTheirProgramWritesThem) {
+  const ReadResult r = readText("Booster 16_15 16 15\r\nRotate 16_15\r\nRotate 16_15\r\nRotate 16_15\r\n"
+                                "Booster 1_3 1 3\r\n");
+  ASSERT_EQ(countType(r.board, GizmoType::Booster), 2u);
+  EXPECT_EQ(gizmo(r.board, "16_15")->orientation, 270);
+  EXPECT_EQ(gizmo(r.board, "16_15")->x, 16);
+  EXPECT_EQ(gizmo(r.board, "1_3")->orientation, 0);
+  for (const std::string& w : formatted(r.warnings)) EXPECT_EQ(w.find("Booster"), std::string::npos) << w;
+  EXPECT_EQ(firstTextError("Booster U 1"), "b.txt:1:1: error: Booster needs 3 values (Booster NAME X Y) but the line has 2");
+}
+
 TEST(TextReader, EmptyAndBlankFilesGiveTheDefaultBoard) {
   EXPECT_TRUE(readText("").board.gizmos.empty());
   const ReadResult r = readText("\n   \n\t\n");

@@ -837,9 +837,10 @@ struct SeekCase {
   MotionModel model;
   Precision precision;
   double seconds;
+  const char* board = "boards/spec-example.txt";
 };
 void PrintTo(const SeekCase& c, std::ostream* os) {
-  *os << (c.model == MotionModel::Ballistic ? "ballistic " : "classic ") << precisionName({c.precision, 0}) << " "
+  *os << c.board << " " << (c.model == MotionModel::Ballistic ? "ballistic " : "classic ") << precisionName({c.precision, 0}) << " "
       << c.seconds << " s";
 }
 
@@ -847,7 +848,7 @@ class ReplaySeek : public ::testing::TestWithParam<SeekCase> {
  protected:
   void SetUp() override {
     const SeekCase& c = GetParam();
-    request_ = requestFor("boards/spec-example.txt", c.model, c.seconds);
+    request_ = requestFor(c.board, c.model, c.seconds);
     precision_ = PrecisionChoice{c.precision, 0};
     recorded_ = record(request_, precision_, "seek");
     log_.emplace(openBytes(recorded_.bytes));
@@ -898,9 +899,18 @@ TEST_P(ReplaySeek, PastTheLastEventThrows) {
 
 INSTANTIATE_TEST_SUITE_P(SpecExample, ReplaySeek,
                          ::testing::Values(SeekCase{MotionModel::Ballistic, Precision::Double, 60.0},
-                                           SeekCase{MotionModel::Classic, Precision::LongDouble, 150.0}),
+                                           SeekCase{MotionModel::Classic, Precision::LongDouble, 150.0},
+                                           // boosts are decisions that seeking must reproduce
+                                           SeekCase{MotionModel::Ballistic, Precision::Double, 60.0,
+                                                    "boards/gizmos/booster.txt"}),
                          [](const ::testing::TestParamInfo<SeekCase>& info) {
-                           return std::string(info.param.model == MotionModel::Ballistic ? "Ballistic" : "Classic") +
+                           // Boards other than the spec example add their name: "booster" → "Booster".
+                           std::string board = std::filesystem::path(info.param.board).stem().string();
+                           if (board == "spec-example") board.clear();
+                           std::erase_if(board, [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); });
+                           if (!board.empty()) board[0] = char(std::toupper(static_cast<unsigned char>(board[0])));
+                           return board +
+                                  std::string(info.param.model == MotionModel::Ballistic ? "Ballistic" : "Classic") +
                                   (info.param.precision == Precision::Double ? "Double" : "LongDouble");
                          });
 

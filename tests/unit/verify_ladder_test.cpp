@@ -41,6 +41,11 @@ TEST(SceneArithmetic, RationalOnlyWhereNoSquareRootIsBuiltIn) {
   EXPECT_NE(sceneArithmetic(r).reason.find("mu2"), std::string::npos);
   const RunRequest spec = requestFor("spec-example.txt", MotionModel::Classic, 1);
   EXPECT_FALSE(sceneArithmetic(spec).rationalPossible);
+  // A booster's slanted face has the triangle's irrational normal.
+  RunRequest boosted = requestFor("gizmos/booster.txt", MotionModel::Classic, 1);
+  boosted.board.mu2 = 0;
+  EXPECT_FALSE(sceneArithmetic(boosted).rationalPossible);
+  EXPECT_NE(sceneArithmetic(boosted).reason.find("booster U"), std::string::npos) << sceneArithmetic(boosted).reason;
 }
 
 TEST(WideValue, HoldsEveryBinaryScalarExactly) {

@@ -64,7 +64,7 @@ Box2dBody box2dBodyOf(const GizmoSpec& gizmo) {
   }
   const Shape<double> shape = restShape<double>(gizmo);
   body.sensor = gizmo.type == GizmoType::Absorber;
-  if (gizmo.type == GizmoType::Circle) body.parts.push_back(circlePart(shape.circles.at(0).centre, shape.circles.at(0).radius));
+  if (shape.segments.empty()) body.parts.push_back(circlePart(shape.circles.at(0).centre, shape.circles.at(0).radius));
   else body.parts.push_back(polygonPart(insetPolygon(shape.segments, kBox2dPolygonSkin)));
   return body;
 }

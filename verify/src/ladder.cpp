@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/verify/certify.hpp"
 #include "trace.hpp"
 
@@ -19,8 +20,8 @@ SceneArithmetic sceneArithmetic(const RunRequest& request) {
     return s;
   }
   for (const GizmoSpec& g : request.board.gizmos) {
-    if (g.type == GizmoType::Triangle) {
-      s.reason = "triangle " + g.name + " has a 45-degree edge, whose unit normal (sqrt(2)/2) is irrational";
+    if (g.type == GizmoType::Triangle || g.type == GizmoType::Booster) {
+      s.reason = std::string(gizmoTypeWord(g.type)) + " " + g.name + " has a 45-degree edge, whose unit normal (sqrt(2)/2) is irrational";
       return s;
     }
   }

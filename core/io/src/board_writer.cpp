@@ -33,6 +33,8 @@ const char* xmlElement(GizmoType t) {
     case GizmoType::LeftFlipper: return "leftFlipper";
     case GizmoType::RightFlipper: return "rightFlipper";
     case GizmoType::Absorber: return "absorber";
+    case GizmoType::Booster: return "booster";
+    case GizmoType::Teleporter: return "teleporter";
   }
   return "squareBumper";
 }
@@ -45,6 +47,8 @@ const char* textCommand(GizmoType t) {
     case GizmoType::LeftFlipper: return "LeftFlipper";
     case GizmoType::RightFlipper: return "RightFlipper";
     case GizmoType::Absorber: return "Absorber";
+    case GizmoType::Booster: return "Booster";
+    case GizmoType::Teleporter: return "Teleporter";
   }
   return "Square";
 }
@@ -76,6 +80,7 @@ std::string writeXmlBoard(const BoardSpec& board) {
         break;
       case GizmoType::Square:
       case GizmoType::Circle:
+      case GizmoType::Teleporter:
         if (g.orientation != 0) out += attr("orientation", std::to_string(g.orientation));
         break;
       default:

@@ -38,6 +38,9 @@ constexpr CommandInfo kCommands[] = {
     {"LeftFlipper", Cmd::Gizmo, GizmoType::LeftFlipper, 4, "LeftFlipper NAME X Y"},
     {"RightFlipper", Cmd::Gizmo, GizmoType::RightFlipper, 4, "RightFlipper NAME X Y"},
     {"Absorber", Cmd::Absorber, GizmoType::Absorber, 6, "Absorber NAME X1 Y1 X2 Y2"},
+    // Additions, spelled as the programs that invented them spell them (docs/board-files.md §2).
+    {"Booster", Cmd::Gizmo, GizmoType::Booster, 4, "Booster NAME X Y"},
+    {"Teleporter", Cmd::Gizmo, GizmoType::Teleporter, 4, "Teleporter NAME X Y"},
     {"Ball", Cmd::Ball, GizmoType::Square, 6, "Ball NAME X Y VX VY"},
     {"Rotate", Cmd::Rotate, GizmoType::Square, 2, "Rotate NAME"},
     {"Delete", Cmd::Delete, GizmoType::Square, 2, "Delete NAME"},

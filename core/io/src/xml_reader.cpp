@@ -65,14 +65,32 @@ constexpr GizmoElement kGizmoElements[] = {
     {"squareBumper", GizmoType::Square},     {"circleBumper", GizmoType::Circle},
     {"triangleBumper", GizmoType::Triangle}, {"leftFlipper", GizmoType::LeftFlipper},
     {"rightFlipper", GizmoType::RightFlipper}, {"absorber", GizmoType::Absorber},
+    {"booster", GizmoType::Booster},       {"teleporter", GizmoType::Teleporter},
 };
 
 // " (did you mean <squareBumper>?)" when name differs from one of known only in case.
-std::string caseHint(std::string_view name, std::initializer_list<std::string_view> known) {
+std::string caseHint(std::string_view name, const std::vector<std::string_view>& known) {
   const std::string lower = toLowerAscii(name);
   for (std::string_view k : known)
     if (toLowerAscii(k) == lower) return " (did you mean " + tag(k) + "?)";
   return {};
+}
+
+std::vector<std::string_view> gizmoElementNames() {
+  std::vector<std::string_view> names;
+  for (const GizmoElement& k : kGizmoElements) names.push_back(k.element);
+  return names;
+}
+
+// "squareBumper, circleBumper, ... and booster": every element of kGizmoElements.
+std::string gizmoElementList() {
+  const std::vector<std::string_view> names = gizmoElementNames();
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += i + 1 == names.size() ? " and " : ", ";
+    out += names[i];
+  }
+  return out;
 }
 
 class XmlReader {
@@ -304,11 +322,8 @@ class XmlReader {
       for (const GizmoElement& k : kGizmoElements)
         if (k.element == c.name()) kind = &k;
       if (!kind) {
-        rep_.error(elementAt(c), "unknown gizmo element " + tag(c.name()) +
-                                     "; the gizmos are squareBumper, circleBumper, triangleBumper, leftFlipper, "
-                                     "rightFlipper and absorber" +
-                                     caseHint(c.name(), {"squareBumper", "circleBumper", "triangleBumper",
-                                                         "leftFlipper", "rightFlipper", "absorber"}));
+        rep_.error(elementAt(c), "unknown gizmo element " + tag(c.name()) + "; the gizmos are " + gizmoElementList() +
+                                     caseHint(c.name(), gizmoElementNames()));
         continue;
       }
       readGizmo(c, kind->type);

@@ -21,6 +21,9 @@ std::string_view invariantName(Invariant i) {
 
 namespace {
 
+// A disc of radius 0.5: the circle bumper and the teleporter.
+bool isDisc(GizmoType t) { return t == GizmoType::Circle || t == GizmoType::Teleporter; }
+
 // Instants looked at between two events, evenly spaced inside the interval.
 constexpr int kSamplesBetweenEvents = 3;
 // The fastest a flipper's surface can move: 6π rad/s at 1.75 L from the pivot (the tip's far
@@ -102,7 +105,7 @@ InvariantChecker<Real>::InvariantChecker(const GameBoard<Real>& board, std::vect
     piece.id = GizmoId(i);
     piece.type = spec.type;
     const Shape<Real> shape = restShape<Real>(spec);
-    if (spec.type == GizmoType::Circle) piece.centre = shape.circles.front().centre;
+    if (isDisc(spec.type)) piece.centre = shape.circles.front().centre;
     else if (spec.type != GizmoType::LeftFlipper && spec.type != GizmoType::RightFlipper)
       for (const CircleFeature<Real>& c : shape.circles) piece.polygon.push_back(c.centre);
     geometry_->pieces.push_back(piece);
@@ -183,7 +186,7 @@ void InvariantChecker<Real>::checkOverlaps(const Real& time, const Snapshot& s, 
       const typename Geometry::Piece& g = geometry_->pieces[k];
       if (g.type == GizmoType::Absorber && fired_.count({g.id, b.id})) continue;  // it ignores the ball it fired
       Real distance;
-      if (g.type == GizmoType::Circle) {
+      if (isDisc(g.type)) {
         distance = length(Vec2<Real>(p - g.centre)) - fromDouble<Real>(0.5);
       } else if (!g.polygon.empty()) {
         distance = signedDistanceToPolygon(p, g.polygon);
@@ -253,6 +256,7 @@ void InvariantChecker<Real>::eventExecuted(const Event<Real>& e, const EventOutc
   if (checks(Invariant::Energy)) checkEnergy(e, outcome);
   allowance_ = Real(0);
   released_.clear();
+  teleported_.clear();
   takeSnapshot();
   if (checks(Invariant::NoTunnelling)) checkOverlaps(now, *snapshot_, std::string("after " + describeEvent(e) + " at").c_str());
 }
@@ -267,6 +271,15 @@ void InvariantChecker<Real>::modelRuleApplied(const Real& time, ModelRule rule, 
   }
   // The documented minimum bounce: at most ½·restSpeed² per slow hit on something round.
   if (rule == ModelRule::MinimumBounce) allowance_ += params.restSpeed * params.restSpeed / Real(2);
+  // A booster doubles the speed it reports, reported before it does: the kinetic energy ½|v|²
+  // becomes ½|2v|², a rise of 3·½|v|².
+  // A teleport moves the ball, reported before it does: the rise in height it may bring is
+  // settled after the event (checkEnergy).
+  if (rule == ModelRule::Teleported) teleported_.emplace_back(other, board_.gizmo(other).asBall()->positionAt(time).y);
+  if (rule == ModelRule::Boosted) {
+    const Vec2<Real> v = board_.gizmo(other).asBall()->velocityAt(time);
+    allowance_ += Real(3) * lengthSquared(v) / Real(2);
+  }
 }
 
 template <class Real>
@@ -280,6 +293,11 @@ void InvariantChecker<Real>::checkEnergy(const Event<Real>& e, const EventOutcom
     const Ball<Real>& b = *board_.gizmo(id).asBall();
     const Vec2<Real> v = b.velocityAt(board_.now()), p = b.positionAt(board_.now());
     allowance += half * lengthSquared(v) + params.gravity * (Real(kBoardSize) - p.y);
+  }
+  // A teleport lifts a ball from height 20 − y to 20 − y′: g·(y − y′) of potential energy.
+  for (const auto& [id, y] : teleported_) {
+    const Real lift = params.gravity * Real(y - board_.gizmo(id).asBall()->positionAt(board_.now()).y);
+    if (Real(0) < lift) allowance += lift;
   }
   // A swinging flipper's surface moves at up to kFlipperSurfaceSpeed: a ball leaves it at most
   // that much faster than it came relative to it, so |v'| ≤ |v| + 2u.

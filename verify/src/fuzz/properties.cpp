@@ -291,7 +291,7 @@ namespace {
 
 constexpr Property kProperties[] = {
     {"no-tunnelling", "no ball inside a gizmo or beyond a wall, at every event and between events", &noTunnelling},
-    {"energy", "energy rises only by what flipper hits and absorber shots supply; friction ticks slow balls", &energy},
+    {"energy", "energy rises only by what flipper hits, absorber shots and boosters supply; friction ticks slow balls", &energy},
     {"event-queue", "time never goes back; the queue holds exactly the pending events; every moving ball is covered",
      &eventQueue},
     {"replay-identity", "recording twice gives the same log, and replaying it gives the same decisions", &replayIdentity},

@@ -17,6 +17,7 @@ namespace {
 // The key codes that key connections and the key script share, so that presses do something.
 constexpr std::array<int, 4> kKeys{32, 37, 39, 65};
 
+
 struct Builder {
   SeededRandom& rng;
   BoardSpec& board;
@@ -56,6 +57,28 @@ struct Builder {
       g.name = "G" + std::to_string(i++);
       board.gizmos.push_back(g);
     }
+  }
+
+  // The additions of other programs (docs/physics.md, "Gizmos other programs added") take the
+  // place of gizmos of the same outline: half the triangles become boosters, half the circles
+  // teleporters. The choice is drawn
+  // from a stream of its own, so that every other draw, and every board without a triangle,
+  // stays what it was before the additions.
+  void additions(std::uint64_t seed) {
+    SeededRandom own(seed ^ 0x6164646974696f6eULL);  // "addition"
+    for (GizmoSpec& g : board.gizmos)
+      if (g.type == GizmoType::Triangle && own.chance(2)) g.type = GizmoType::Booster;
+    // half the circles become teleporters, most of them with an exit (now and then themselves)
+    for (GizmoSpec& g : board.gizmos)
+      if (g.type == GizmoType::Circle && own.chance(2)) g.type = GizmoType::Teleporter;
+    std::vector<const GizmoSpec*> teleporters;
+    for (const GizmoSpec& g : board.gizmos)
+      if (g.type == GizmoType::Teleporter) teleporters.push_back(&g);
+    for (const GizmoSpec* from : teleporters)
+      if (!own.chance(5)) {
+        const GizmoSpec* to = teleporters[std::size_t(own.whole(0, int(teleporters.size()) - 1))];
+        board.connections.push_back(ConnectSpec{from->name, to->name, {}});
+      }
   }
 
   void connections() {
@@ -117,7 +140,8 @@ struct Builder {
     switch (rng.whole(0, 9)) {
       case 0: {  // aimed exactly at a corner of a square, triangle or absorber
         const GizmoSpec* g = pickGizmo([](const GizmoSpec& s) {
-          return s.type == GizmoType::Square || s.type == GizmoType::Triangle || s.type == GizmoType::Absorber;
+          return s.type == GizmoType::Square || s.type == GizmoType::Triangle || s.type == GizmoType::Absorber ||
+                 s.type == GizmoType::Booster;
         });
         if (!g) break;
         const double cx = g->x + (rng.whole(0, 1) ? g->width : 0), cy = g->y + (rng.whole(0, 1) ? g->height : 0);
@@ -229,6 +253,7 @@ RunRequest generateRun(std::uint64_t seed, int size) {
   r.model = rng.whole(0, 1) ? MotionModel::Ballistic : MotionModel::Classic;
   r.maxTick = rng.chance(4) ? (rng.whole(0, 1) ? 0.01 : 0.1) : 0.05;
   b.gizmos(rng.whole(0, 1 + size * 3 / 5));
+  b.additions(seed);
   b.connections();
   // One to a hundred balls; many only on large sizes.
   b.balls(rng.whole(1, 1 + size * 99 / kMaxSize));

@@ -8,7 +8,9 @@
 
 namespace gizmo {
 
-enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber };
+// Booster and later entries: gizmos that other Gizmoball programs added (docs/physics.md,
+// "Gizmos other programs added").
+enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter };
 enum class KeyDirection { Down, Up };
 
 // Where a statement came from in its file (1-based; 0 when it was not read from a file).

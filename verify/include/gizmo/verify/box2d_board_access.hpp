@@ -25,6 +25,8 @@ class DrivenBoardAccess final : public BoardAccess<double> {
   void reportRule(ModelRule, GizmoId, GizmoId) override {}
   bool jammed() const override { return false; }
   void releaseContactsOn(GizmoId) override {}
+  // Box2D moves the bodies: a teleporter is a circle bumper here, and says where the runs part.
+  bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return false; }
 
  private:
   PhysicsParams<double> params_;

@@ -4,8 +4,10 @@
 
 #include "gizmo/core/board/build_board.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
+#include "gizmo/core/gizmos/booster.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/polygonal_gizmo.hpp"
+#include "gizmo/core/gizmos/teleporter.hpp"
 
 namespace gizmo {
 
@@ -22,6 +24,12 @@ std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams
       case GizmoType::Circle:
       case GizmoType::Triangle:
         board->add(std::make_unique<GridBumper<Real>>(g));
+        break;
+      case GizmoType::Booster:
+        board->add(std::make_unique<Booster<Real>>(g));
+        break;
+      case GizmoType::Teleporter:
+        board->add(std::make_unique<Teleporter<Real>>(g));
         break;
       case GizmoType::LeftFlipper:
       case GizmoType::RightFlipper:
@@ -57,7 +65,14 @@ std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams
     if (!id) throw std::invalid_argument("board names an unknown gizmo '" + name + "'");
     return *id;
   };
-  for (const ConnectSpec& c : spec.connections) board->connect(idOf(c.source), idOf(c.target));
+  for (const ConnectSpec& c : spec.connections) {
+    const GizmoId source = idOf(c.source), target = idOf(c.target);
+    board->connect(source, target);
+    // A teleporter's exit is the first teleporter it is connected to (d-g-n's Teleporter.java).
+    auto* from = dynamic_cast<Teleporter<Real>*>(&board->gizmo(source));
+    const auto* to = dynamic_cast<const Teleporter<Real>*>(&board->gizmo(target));
+    if (from && to && !from->exit()) from->setExit(target, to->centre());
+  }
   for (const KeyConnectSpec& k : spec.keyConnections) board->keyConnect(k.key, k.direction, idOf(k.target));
   return board;
 }

@@ -125,6 +125,7 @@ class GameBoard final : private BoardAccess<Real> {
     if (observer_) observer_->modelRuleApplied(now_, rule, gizmo, other);
   }
   void releaseContactsOn(GizmoId g) override;
+  bool roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const override;
   bool jammed() const override { return collisionsInWindow_ > kJamThreshold; }
 
   void rebuild();

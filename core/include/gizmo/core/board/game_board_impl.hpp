@@ -115,6 +115,23 @@ Real GameBoard<Real>::energy() const {
 }
 
 template <class Real>
+bool GameBoard<Real>::roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const {
+  const Real r = Ball<Real>::radius(), size(kBoardSize);
+  if (p.x - r < Real(0) || size < p.x + r || p.y - r < Real(0) || size < p.y + r) return false;
+  const Box<Real> box{p - Vec2<Real>(r, r), p + Vec2<Real>(r, r)};
+  for (std::size_t g = 1; g < gizmos_.size(); ++g) {  // the walls (id 0) are checked above
+    if (GizmoId(g) == ball || GizmoId(g) == ignore) continue;
+    if (const Ball<Real>* other = gizmos_[g]->asBall()) {
+      if (!other->captured() && lengthSquared(Vec2<Real>(other->positionAt(now_) - p)) < Real(4) * r * r) return false;
+      continue;
+    }
+    const Box<Real> o = gizmos_[g]->bounds();
+    if (box.lo.x < o.hi.x && o.lo.x < box.hi.x && box.lo.y < o.hi.y && o.lo.y < box.hi.y) return false;
+  }
+  return true;
+}
+
+template <class Real>
 std::vector<CollisionPair> GameBoard<Real>::collisionPairs() {
   rebuild();
   std::vector<CollisionPair> pairs;

@@ -15,7 +15,11 @@ enum class ModelRule : std::uint8_t {
   Captured,          // an absorber captured a ball
   Released,          // an absorber fired a ball
   Jammed,            // too many hits at one instant: this one leaves no rebound (see docs/physics.md)
+  Boosted,           // a booster doubled a ball's speed
+  Teleported,        // a teleporter moved a ball to its exit
 };
+// The last rule: a log's rule value above it is refused.
+inline constexpr ModelRule kLastModelRule = ModelRule::Teleported;
 
 inline std::string_view modelRuleName(ModelRule r) {
   switch (r) {
@@ -28,6 +32,8 @@ inline std::string_view modelRuleName(ModelRule r) {
     case ModelRule::Captured: return "captured";
     case ModelRule::Released: return "released";
     case ModelRule::Jammed: return "jammed";
+    case ModelRule::Boosted: return "boosted";
+    case ModelRule::Teleported: return "teleported";
   }
   return "?";
 }

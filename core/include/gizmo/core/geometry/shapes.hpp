@@ -80,14 +80,18 @@ Shape<Real> restShape(const GizmoSpec& g) {
     case GizmoType::Square:
       addPolygon(s, {at(0, 0), at(1, 0), at(1, 1), at(0, 1)});
       break;
-    case GizmoType::Triangle: {
+    case GizmoType::Triangle:
+    case GizmoType::Booster: {
+      // A booster at rest has its right angle at the lower left (d-g-n/CS308-GizmoBall's
+      // BoosterGizmo.java): the triangle turned three quarters.
       const Vec2<Real> c = at(0.5, 0.5);
-      const int k = g.orientation / 90;
+      const int k = g.orientation / 90 + (g.type == GizmoType::Booster ? 3 : 0);
       addPolygon(s, {rotateQuarterTurns(at(0, 0), c, k), rotateQuarterTurns(at(1, 0), c, k),
                      rotateQuarterTurns(at(0, 1), c, k)});
       break;
     }
     case GizmoType::Circle:
+    case GizmoType::Teleporter:
       s.circles.push_back(CircleFeature<Real>{at(0.5, 0.5), fromDouble<Real>(0.5)});
       break;
     case GizmoType::Absorber:

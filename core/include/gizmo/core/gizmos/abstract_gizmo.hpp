@@ -19,7 +19,7 @@ namespace gizmo {
 
 enum class CollisionAnswer { CanCollide, Defer, NeverCollides };
 
-enum class GizmoKind { Ball, OuterWalls, Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber };
+enum class GizmoKind { Ball, OuterWalls, Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter };
 
 template <class Real> class Ball;
 
@@ -47,6 +47,9 @@ class BoardAccess {
   virtual bool jammed() const = 0;
   // Every ball sliding on gizmo g leaves that contact (g is about to move).
   virtual void releaseContactsOn(GizmoId g) = 0;
+  // Whether ball `ball` could be put with its centre at p now: inside the walls, clear of every
+  // free ball and of the box of every gizmo but `ignore` (boxes, not shapes: a cautious answer).
+  virtual bool roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const = 0;
 };
 
 template <class Real>

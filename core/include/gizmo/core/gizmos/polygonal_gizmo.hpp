@@ -69,6 +69,7 @@ class GridBumper : public GridPlaced<AbstractGizmoWithPolygonalGeometry<Real>> {
       case GizmoType::Square: return GizmoKind::Square;
       case GizmoType::Circle: return GizmoKind::Circle;
       case GizmoType::Triangle: return GizmoKind::Triangle;
+      case GizmoType::Booster: return GizmoKind::Booster;
       default: return GizmoKind::Absorber;
     }
   }

@@ -109,6 +109,7 @@ class InvariantChecker final : public BoardObserver<Real> {
   Real energyBefore_{0};
   Real allowance_{0};
   std::vector<GizmoId> released_;
+  std::vector<std::pair<GizmoId, Real>> teleported_;  // each teleported ball, and its height before
 };
 
 struct InvariantRun {
