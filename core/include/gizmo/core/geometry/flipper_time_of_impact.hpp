@@ -122,7 +122,8 @@ struct TipGap {
 // - bend: what the capsule's own motion adds to the gap's second derivative, besides the
 //   ball's acceleration along the normal. A ball touching a capsule that turns into it with no
 //   closing speed (at the pivot the surface does not move) is pressed by this alone.
-// A side's gap is h = σ q·n − reach with n turning at ω, so h'' = σ(q''·n + 2ω q'·u − ω² q·n).
+// A side's gap is h = σ q·n − reach with n = (u.y, −u.x) turning at ω, so
+// h'' = σ(q''·n + 2ω q'·u − ω² q·n) = q''·n_σ + σ 2ω q'·u − ω² q·n_σ for the side's normal n_σ = σ n.
 // The tip's is d = |e| − reach with e = q − L u, so d'' = e''·ê + (|e'|² − (e'·ê)²)/|e|,
 // where e' = q' − Lω u⊥ and e'' = q'' + Lω² u.
 template <class Real>
@@ -152,7 +153,12 @@ std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, cons
     const Real across = dot(q, touch.normal);
     const Real along = dot(q, u);
     touch.gap = across - reach;
-    touch.bend = Real(2) * axis.omega * dot(ball.v, u) - axis.omega * axis.omega * across;
+    // σ = +1 for side 0, −1 for side 1: it turns the Coriolis term with the side (across
+    // already has it, through the side's normal). Without it a ball running along side 1 as
+    // that side turned into it counted as opening and was not hit: it passed into the flipper
+    // (the generator's first draw with boosters, classic, gravity 1000: docs/fuzzing.md).
+    const Real sigma = feature == 0 ? Real(1) : Real(-1);
+    touch.bend = sigma * Real(2) * axis.omega * dot(ball.v, u) - axis.omega * axis.omega * across;
     touch.alongAxis = Real(0) <= along && along <= axis.length && Real(0) <= across;
   } else if (feature == 3) {
     const Vec2<Real> e = ball.p - (axis.pivot + axis.length * u);
