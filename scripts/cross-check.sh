@@ -46,6 +46,7 @@ for target in "${targets[@]}"; do
     continue
   fi
   built=$SECONDS
+  [ "$target" = wasm32 ] && wasmBuilt=1
   run=build/cross-$target/gizmo-run
   compared=0 identical=0 otherFormat=0
   while read -r file board model precision seconds keys recordedOn; do
@@ -92,6 +93,16 @@ for target in "${targets[@]}"; do
   [ $compared -eq 0 ] && { verdict=nothing-compared; failed=1; }
   table+=("$target $compared $identical $otherFormat $((built - started)) $((SECONDS - built)) $verdict")
 done
+
+# The wasm command's speed against native: the spec example over 60 s, run by the host's build
+# and by node, back to back (docs/determinism.md, "Figures").
+if [ "${wasmBuilt:-0}" = 1 ]; then
+  seconds() { local t0 t1; t0=$(date +%s.%N); "$@" > /dev/null 2>&1; t1=$(date +%s.%N); awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }'; }
+  native=$(seconds "$host" run --time 60)
+  wasm=$(seconds build/cross-wasm32/gizmo-run run --time 60)
+  printf 'cross-check: the spec example over 60 s: native %.2f s, wasm32 under node %.2f s: %.2f times native\n' \
+    "$native" "$wasm" "$(awk -v w="$wasm" -v n="$native" 'BEGIN { print w / n }')"
+fi
 
 echo
 # "other format": golden logs of a scalar format the target does not compute, which it refused.

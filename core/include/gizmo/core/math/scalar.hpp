@@ -61,9 +61,20 @@ inline ChosenOf<Real> minOf(const Real& a, const Real& b) { return b < a ? b : a
 template <class Real>
 inline ChosenOf<Real> maxOf(const Real& a, const Real& b) { return a < b ? b : a; }
 
-// The unit roundoff of the type (for MPFR: of the current default precision).
+// The unit roundoff of the type (for MPFR: of the current default precision): 2^(1 - digits), the
+// gap between 1 and the next value of a format with `digits` significand bits. That is what
+// numeric_limits::epsilon() gives for the IEEE formats, but not for ppc64el's double-double
+// long double, where GCC gives the smallest subnormal (1 plus it is a double-double), which
+// would make every tolerance built on it zero; halving from 1 is exact in every format.
 template <class Real>
-inline Real epsilonOf() { return std::numeric_limits<Real>::epsilon(); }
+inline Real epsilonOf() {
+  static const Real epsilon = [] {
+    Real e(1);
+    for (int bit = 1; bit < std::numeric_limits<Real>::digits; ++bit) e /= 2;
+    return e;
+  }();
+  return epsilon;
+}
 
 // π rounded to the type; never computed through libm. For the hardware floats the compiler
 // rounds this literal (more digits than any of their formats holds) to long double, and the
