@@ -3,9 +3,11 @@
 #include "exact_dyadic.hpp"
 
 #include <algorithm>
-#include "gizmo/core/std_compat.hpp"
+#include <bit>
 #include <cmath>
 #include <stdexcept>
+
+#include "gizmo/core/std_compat.hpp"
 
 namespace gizmo::detail {
 namespace {

@@ -159,8 +159,9 @@ std::string exactText<Float128>(const Float128& value) {
 namespace {
 
 // x87: the integer bit is explicit, so the leading digit is read rather than implied; this also
-// spells the non-canonical encodings by the value the FPU gives them.
-std::string x87Text(const std::uint8_t* bytes) {  // the 10 bytes of the raw form
+// spells the non-canonical encodings by the value the FPU gives them. Compiled on every target,
+// called only where long double is x87's format.
+[[maybe_unused]] std::string x87Text(const std::uint8_t* bytes) {  // the 10 bytes of the raw form
   const std::uint64_t significand = detail::loadLittleEndian(bytes, 8);
   const unsigned signAndExponent = bytes[8] | (unsigned{bytes[9]} << 8);
   const bool negative = (signAndExponent & 0x8000u) != 0;

@@ -99,12 +99,13 @@ struct Recorded {
 };
 
 // Records the run into a temporary file with LogWriter and returns the file's bytes.
-Recorded record(const RunRequest& request, const PrecisionChoice& precision, const std::string& stem) {
+Recorded record(const RunRequest& request, const PrecisionChoice& precision, const std::string& stem,
+                const std::vector<std::string>& boardWarnings = {}) {
   const std::string path = tempPath(stem);
   Recorded out;
   {
     LogWriter writer(path);
-    out.result = recordRun(request, precision, writer);
+    out.result = recordRun(request, precision, writer, boardWarnings);
   }
   out.bytes = readBytes(path);
   std::remove(path.c_str());
@@ -1019,6 +1020,17 @@ std::vector<GoldenCase> goldenCases() {
   return cases;
 }
 
+// The board reader's warnings about a fixture board as `gizmo record fixtures/BOARD` gives them,
+// run from the tree's root: scripts/dev cross-check records the golden runs that way on every
+// target and compares the bytes, and the header keeps the warnings.
+std::vector<std::string> goldenBoardWarnings(const std::string& board) {
+  std::ifstream in(fixture(board), std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<std::string> out;
+  for (const io::Diagnostic& d : io::readBoardString(text, "fixtures/" + board).warnings) out.push_back(io::format(d));
+  return out;
+}
+
 bool updatingGolden() {
   const char* v = std::getenv("GIZMO_UPDATE_GOLDEN");
   return v && std::string(v) == "1";
@@ -1047,7 +1059,7 @@ TEST_P(ReplayGolden, ThisBuildRecordsTheCommittedLog) {
                  << "); scripts/dev cross-check compares its bytes there";
   }
   const RunRequest request = requestFor(g.board, g.model, g.seconds, g.keys);
-  const Recorded fresh = record(request, g.precision, "golden");
+  const Recorded fresh = record(request, g.precision, "golden", goldenBoardWarnings(g.board));
   ASSERT_TRUE(fresh.result.completed) << fresh.result.error;
   if (updatingGolden()) {
     std::filesystem::create_directories(fixture("logs"));
@@ -1071,6 +1083,7 @@ TEST_P(ReplayGolden, ThisBuildRecordsTheCommittedLog) {
   EXPECT_EQ(a.duration, b.duration);
   EXPECT_EQ(a.board, b.board);
   EXPECT_EQ(a.boardHash, b.boardHash);
+  EXPECT_EQ(a.boardWarnings, b.boardWarnings) << "the board reader's warnings, as gizmo record gives them";
   EXPECT_EQ(a.params, b.params) << "this build derives other simulation parameters from the board";
   ASSERT_EQ(a.keys.size(), b.keys.size());
   for (std::size_t i = 0; i < a.keys.size(); ++i) {

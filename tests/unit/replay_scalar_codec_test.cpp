@@ -7,7 +7,6 @@
 #include <quadmath.h>
 
 #include <array>
-#include "gizmo/core/std_compat.hpp"
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -18,6 +17,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "gizmo/core/std_compat.hpp"
 #include "gizmo/replay/bytes.hpp"
 #include "gizmo/replay/format_error.hpp"
 #include "support/scalar_fixture.hpp"
