@@ -8,20 +8,41 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 namespace gizmo {
 
 
 namespace {
 
-// v's shortest round-trip digits d1 d2 … dn and exponent e: |v| = d1.d2…dn × 10^e. printf's %e
-// rounds correctly, so the first precision that reads back gives the nearest such digits, as
-// std::to_chars chooses them.
+// v's shortest round-trip digits d1 d2 … dn and exponent e: |v| = d1.d2…dn × 10^e, as
+// std::to_chars chooses them: the fewest digits that read back to v, and of those the nearest.
+// printf's %e rounds correctly, so at each length it gives the nearest decimal; where that one
+// does not read back, the next one up or down may, since a power of two's rounding interval
+// reaches twice as far above it as below (2^-1017 is 7.120236347223045e-307, whose nearest
+// 16-digit decimal ...044 reads back to another double).
 struct Digits {
   bool negative = false;
   std::string digits;
   int exponent = 0;
 };
+
+bool readsBack(const Digits& d, double v) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%s%c.%se%d", d.negative ? "-" : "", d.digits[0], d.digits.c_str() + 1, d.exponent);
+  return std::strtod(text, nullptr) == v;
+}
+
+// The decimal `step` (+1 or -1) units of the last digit away from d, with as many digits, or one
+// more or fewer where a carry or borrow crosses a power of ten.
+Digits neighbour(Digits d, int step) {
+  unsigned long long n = std::strtoull(d.digits.c_str(), nullptr, 10);
+  n = step > 0 ? n + 1 : n - 1;
+  const std::size_t before = d.digits.size();
+  d.digits = std::to_string(n);
+  d.exponent += static_cast<int>(d.digits.size()) - static_cast<int>(before);
+  return d;
+}
 
 Digits shortestDigits(double v) {
   Digits d;
@@ -33,8 +54,20 @@ Digits shortestDigits(double v) {
   char buf[64];
   for (int precision = 0; precision < 17; ++precision) {
     std::snprintf(buf, sizeof buf, "%.*e", precision, v);
-    if (std::strtod(buf, nullptr) == v) break;
+    Digits nearest;
+    nearest.negative = d.negative;
+    const char* p = buf + (d.negative ? 1 : 0);
+    for (; *p != 'e'; ++p)
+      if (*p != '.') nearest.digits += *p;
+    nearest.exponent = std::atoi(p + 1);
+    if (readsBack(nearest, v)) return nearest;
+    for (const int step : {1, -1}) {
+      const Digits other = neighbour(nearest, step);
+      if (other.digits != "0" && other.digits.size() == nearest.digits.size() && readsBack(other, v)) return other;
+    }
   }
+  // 17 digits always read back.
+  std::snprintf(buf, sizeof buf, "%.16e", v);
   const char* p = buf + (d.negative ? 1 : 0);
   for (; *p != 'e'; ++p)
     if (*p != '.') d.digits += *p;
