@@ -1,16 +1,20 @@
 // The `gizmo` command: one subcommand per task, each a thin layer over the libraries.
-// CLI11 lives in this one translation unit (it is slow to compile).
+// CLI11 lives in this one translation unit (it is slow to compile). The portable build
+// (GIZMO_PORTABLE, docs/determinism.md) has run, record, replay, dump and diff; verify,
+// crosscheck, fuzz, study and render exist in the full build only.
 #include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "board_input.hpp"
 #include "log_commands.hpp"
 #include "run_command.hpp"
+#ifndef GIZMO_PORTABLE
 #include "verify_command.hpp"
 #include "fuzz_command.hpp"
 #include "crosscheck_command.hpp"
 #include "render_command.hpp"
 #include "study_command.hpp"
+#endif
 
 int main(int argc, char** argv) {
   using namespace gizmo::cli;
@@ -68,6 +72,7 @@ int main(int argc, char** argv) {
   dumpCmd->add_option("--to", dump.to, "Only decisions made at or before this board time");
   dumpCmd->callback([&] { code = dumpCommand(dump); });
 
+#ifndef GIZMO_PORTABLE
   VerifyOptions verify;
   CLI::App* verifyCmd = app.add_subcommand(
       "verify", "Run a board at every rung of the precision ladder and compare each run's decisions with a reference\n"
@@ -180,6 +185,7 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--tolerance", render.tolerance,
                         "Leave out ball path pieces that stay this close (L) to the one before (default 1e-3; 0 keeps all)");
   renderCmd->callback([&] { code = renderCommand(render); });
+#endif
 
   try {
     app.parse(argc, argv);

@@ -39,6 +39,10 @@ bool checkRun(const RunOptions& o, const std::string& command, CheckedRun& out, 
     std::cerr << prefix << "unknown precision '" << o.precision << "' (" << kPrecisionNames << ")\n";
     return false;
   }
+  if (!builtHere(*precision)) {
+    std::cerr << prefix << notBuiltHereMessage(*precision) << '\n';
+    return false;
+  }
   if (!(o.time >= 0) || !std::isfinite(o.time) || o.time > 1e7) {
     std::cerr << prefix << "--time must be a number of seconds from 0 to 1e7\n";
     return false;

@@ -18,8 +18,13 @@ set(GIZMO_FRESH_BUILD_DEFAULT ON)
 if(CMAKE_CXX_COMPILER_LAUNCHER MATCHES "ccache")
   set(GIZMO_FRESH_BUILD_DEFAULT OFF)
 endif()
+# The portable build (docs/determinism.md) has none of the Boost headers below to precompile.
+set(GIZMO_PRECOMPILE_DEFAULT ${GIZMO_FRESH_BUILD_DEFAULT})
+if(GIZMO_PORTABLE)
+  set(GIZMO_PRECOMPILE_DEFAULT OFF)
+endif()
 option(GIZMO_PRECOMPILE_HEADERS "Precompile the heavy third-party headers once per target"
-       ${GIZMO_FRESH_BUILD_DEFAULT})
+       ${GIZMO_PRECOMPILE_DEFAULT})
 option(GIZMO_UNITY_BUILD "Compile each unity group of sources as one translation unit"
        ${GIZMO_FRESH_BUILD_DEFAULT})
 

@@ -1,4 +1,8 @@
 # Every third-party library comes from Debian 12's packages (scripts/setup.sh installs them).
+if(GIZMO_PORTABLE)
+  include(${CMAKE_CURRENT_LIST_DIR}/GizmoPortableDependencies.cmake)
+  return()
+endif()
 # The minimum Boost version is also written into the installed gizmoConfig.cmake.
 set(GIZMO_BOOST_MIN_VERSION 1.74)
 find_package(Boost ${GIZMO_BOOST_MIN_VERSION} REQUIRED)

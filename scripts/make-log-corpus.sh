@@ -23,7 +23,7 @@ record spec-float128-0.1s "$spec" --time 0.1 --precision float128
 record spec-mpfr128-0.1s "$spec" --time 0.1 --precision mpfr:128
 record spec-flipper-keys-1s "$spec" --time 1 --keys "$root/fixtures/keys/flippers.keys"
 record four-balls-meeting-5s fixtures/boards/scenes/four-balls-meeting.txt --time 5
-# A board read leniently: the log's header lists its warnings (format 3).
+# A board read leniently: the log's header lists its warnings (since format 3).
 record lenient-board-1s fixtures/boards/lenient/spec-example-messy.txt --time 1
 
 # The broken ones. A log is a 12-byte file header, frames (u8 type, u32 length, payload, u64

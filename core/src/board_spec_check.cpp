@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -21,8 +20,8 @@
 #include <unordered_map>
 #include <utility>
 
-#include <boost/multiprecision/gmp.hpp>
-
+#include "exact_dyadic.hpp"
+#include "gizmo/core/decimal_text.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
 
 namespace gizmo {
@@ -43,16 +42,13 @@ const char* gizmoTypeWord(GizmoType type) {
 
 namespace {
 
-using Rational = boost::multiprecision::mpq_rational;
+using Exact = detail::ExactDyadic;
 
 // A number for a message: plain decimal digits unless the magnitude is extreme; never rounded.
 std::string number(double v) {
-  char buf[512];
   const double a = std::fabs(v);
   const bool plain = v == 0 || (a >= 1e-4 && a < 1e15);
-  const auto r = plain ? std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed)
-                       : std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
+  return plain ? shortestFixedDecimal(v) : shortestDecimal(v);
 }
 
 // A name in quotes, cut short when it is very long.
@@ -86,7 +82,7 @@ bool pointCloserThan(double px, double py, double cx, double cy, double dist) {
   // Here d2 ≤ 2t and its relative error is a few units of 2^-53: 1e-9·t is far beyond it.
   if (d2 < t - 1e-9 * t) return true;
   if (d2 > t + 1e-9 * t) return false;
-  const Rational ex = Rational(px) - Rational(cx), ey = Rational(py) - Rational(cy), rd(dist);
+  const Exact ex = Exact(px) - Exact(cx), ey = Exact(py) - Exact(cy), rd(dist);
   return ex * ex + ey * ey < rd * rd;
 }
 
@@ -95,16 +91,16 @@ bool pointCloserThan(double px, double py, double cx, double cy, double dist) {
 bool segmentCloserThan(double px, double py, const Vec2<double>& a, const Vec2<double>& b, double dist) {
   if (px <= std::min(a.x, b.x) - dist || px >= std::max(a.x, b.x) + dist) return false;
   if (py <= std::min(a.y, b.y) - dist || py >= std::max(a.y, b.y) + dist) return false;
-  const Rational ax(a.x), ay(a.y), bx(b.x), by(b.y), qx(px), qy(py), r2 = Rational(dist) * Rational(dist);
-  const Rational dx = bx - ax, dy = by - ay, wx = qx - ax, wy = qy - ay;
-  const Rational along = dx * wx + dy * wy;
-  const Rational len2 = dx * dx + dy * dy;
+  const Exact ax(a.x), ay(a.y), bx(b.x), by(b.y), qx(px), qy(py), r2 = Exact(dist) * Exact(dist);
+  const Exact dx = bx - ax, dy = by - ay, wx = qx - ax, wy = qy - ay;
+  const Exact along = dx * wx + dy * wy;
+  const Exact len2 = dx * dx + dy * dy;
   if (along <= 0) return wx * wx + wy * wy < r2;
   if (along >= len2) {
-    const Rational ex = qx - bx, ey = qy - by;
+    const Exact ex = qx - bx, ey = qy - by;
     return ex * ex + ey * ey < r2;
   }
-  const Rational c = dx * wy - dy * wx;  // distance² = c² / len2
+  const Exact c = dx * wy - dy * wx;  // distance² = c² / len2
   return c * c < r2 * len2;
 }
 
@@ -119,13 +115,13 @@ bool insideConvex(double px, double py, const std::vector<Vec2<double>>& poly) {
     maxY = std::max(maxY, v.y);
   }
   if (px < minX || px > maxX || py < minY || py > maxY) return false;
-  const Rational qx(px), qy(py);
+  const Exact qx(px), qy(py);
   bool positive = false, negative = false;
   for (std::size_t i = 0; i < poly.size(); ++i) {
     const Vec2<double>& a = poly[i];
     const Vec2<double>& b = poly[(i + 1) % poly.size()];
-    const Rational c = (Rational(b.x) - Rational(a.x)) * (qy - Rational(a.y)) -
-                       (Rational(b.y) - Rational(a.y)) * (qx - Rational(a.x));
+    const Exact c = (Exact(b.x) - Exact(a.x)) * (qy - Exact(a.y)) -
+                       (Exact(b.y) - Exact(a.y)) * (qx - Exact(a.x));
     if (c > 0) positive = true;
     if (c < 0) negative = true;
     if (positive && negative) return false;

@@ -1,8 +1,14 @@
 #pragma once
 // The core's templates, compiled once per scalar: each instantiate_*.cpp names one scalar.
+#include <cfloat>
 #include "gizmo/core/board/build_board_impl.hpp"
 #include "gizmo/core/board/game_board_impl.hpp"
 #include "gizmo/core/board/game_board_state_impl.hpp"
+
+// Every float and double operation must round to its type, as IEEE 754 says, for the same bits on
+// every machine: FLT_EVAL_METHOD 0. i686's default x87 code (2) keeps 80-bit intermediates; its
+// toolchain file asks for SSE2 instead (docs/determinism.md, "The x87 question").
+static_assert(FLT_EVAL_METHOD == 0, "float and double must be evaluated in their own precision (on i686: -msse2 -mfpmath=sse)");
 
 #define GIZMO_INSTANTIATE_CORE(Real)                                                    \
   namespace gizmo {                                                                      \

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 
+#include "gizmo/replay/format_error.hpp"
 #include "gizmo/replay/replay.hpp"
 
 namespace gizmo::replay {
@@ -52,6 +53,12 @@ void count(std::vector<std::pair<std::string, std::pair<std::uint64_t, std::uint
 DiffReport diffLogs(const OpenedLog& a, const OpenedLog& b, std::size_t context, bool counts) {
   DiffReport r;
   r.sameScalar = a.header.scalar == b.header.scalar;
+  // One scalar name in two formats (long-double recorded on x86 and on aarch64): its values
+  // are different numbers, and the decisions of two machines are not this tool's to compare.
+  if (r.sameScalar && a.header.format != b.header.format)
+    throw FormatError("the logs' " + a.header.scalar + " values have different formats (" + a.header.format + ", " +
+                          b.header.format + "): logs are compared only within one format",
+                      0);
   if (a.header.board != b.header.board) r.notes.push_back("the logs are of different boards");
   if (a.header.model != b.header.model) r.notes.push_back("the logs use different motion models");
   if (!r.sameScalar) r.notes.push_back("different scalars (" + a.header.scalar + ", " + b.header.scalar +

@@ -6,7 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <bit>
+#include "gizmo/core/std_compat.hpp"
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -28,7 +28,7 @@ std::uint64_t frameChecksum(std::uint8_t type, std::uint32_t length, std::span<c
 // The same entry, the time compared bit for bit.
 bool sameEntry(const ChunkEntry& x, const ChunkEntry& y) {
   return x.offset == y.offset && x.eventsDone == y.eventsDone && x.ticksDone == y.ticksDone &&
-         std::bit_cast<std::uint64_t>(x.time) == std::bit_cast<std::uint64_t>(y.time);
+         gizmo::bitCast<std::uint64_t>(x.time) == gizmo::bitCast<std::uint64_t>(y.time);
 }
 
 std::string typeName(std::uint8_t type) {
@@ -96,7 +96,7 @@ void writePreamble(std::vector<std::uint8_t>& out, const ChunkPreamble& p) {
   w.varint(p.ticksDone);
   w.varint(p.eventsDone);
   w.varint(p.decisionsDone);
-  w.u64(std::bit_cast<std::uint64_t>(p.time));
+  w.u64(gizmo::bitCast<std::uint64_t>(p.time));
   w.u8(p.hasKeyframe ? 1 : 0);
   const auto b = w.bytes();
   out.insert(out.end(), b.begin(), b.end());
@@ -107,7 +107,7 @@ std::size_t readPreamble(std::span<const std::uint8_t> payload, ChunkPreamble& p
   p.ticksDone = r.varint();
   p.eventsDone = r.varint();
   p.decisionsDone = r.varint();
-  p.time = std::bit_cast<double>(r.u64());
+  p.time = gizmo::bitCast<double>(r.u64());
   const std::uint8_t k = r.u8();
   if (k > 1) throw FormatError("chunk preamble: bad keyframe flag", r.position() - 1);
   p.hasKeyframe = k == 1;
@@ -166,13 +166,13 @@ void LogWriter::finish(const RunEnd& end) {
     w.varint(e.offset - prev.offset);
     w.varint(e.eventsDone - prev.eventsDone);
     w.varint(e.ticksDone - prev.ticksDone);
-    w.u64(std::bit_cast<std::uint64_t>(e.time));
+    w.u64(gizmo::bitCast<std::uint64_t>(e.time));
     w.u64(e.digest.value_or(0));
     prev = e;
   }
   w.u8(end.completed ? 1 : 0);
   w.varint(end.events);
-  w.u64(std::bit_cast<std::uint64_t>(end.time));
+  w.u64(gizmo::bitCast<std::uint64_t>(end.time));
   w.varint(end.message.size());
   w.bytes(end.message.data(), end.message.size());
   frame(std::uint8_t(FrameType::Index), w.bytes());
@@ -273,7 +273,7 @@ void LogReader::parseIndex(std::span<const std::uint8_t> payload) {
     e.offset = prev.offset + r.varint();
     e.eventsDone = prev.eventsDone + r.varint();
     e.ticksDone = prev.ticksDone + r.varint();
-    e.time = std::bit_cast<double>(r.u64());
+    e.time = gizmo::bitCast<double>(r.u64());
     e.digest = r.u64();
     chunks_.push_back(e);
     prev = e;
@@ -283,7 +283,7 @@ void LogReader::parseIndex(std::span<const std::uint8_t> payload) {
   if (completed > 1) throw FormatError("index: bad run status", r.position() - 1);
   end.completed = completed == 1;
   end.events = r.varint();
-  end.time = std::bit_cast<double>(r.u64());
+  end.time = gizmo::bitCast<double>(r.u64());
   const std::uint64_t len = r.varint();
   if (len > r.remaining()) throw FormatError("index: message longer than the frame", r.position());
   const auto text = r.span(static_cast<std::size_t>(len));

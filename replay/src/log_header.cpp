@@ -1,7 +1,7 @@
 // The header frame's bytes (log_header.hpp, docs/replay-format.md).
 #include "gizmo/replay/log_header.hpp"
 
-#include <bit>
+#include "gizmo/core/std_compat.hpp"
 
 #include "gizmo/io/board_file.hpp"
 #include "gizmo/io/board_writer.hpp"
@@ -35,11 +35,12 @@ std::string readString(ByteReader& r, std::size_t limit, const char* what) {
 }  // namespace
 
 LogHeader headerFor(const RunRequest& request, const std::string& precision, const std::string& scalar,
-                    std::vector<std::uint8_t> params) {
+                    const std::string& format, std::vector<std::uint8_t> params) {
   LogHeader h;
   h.toolkit = GIZMO_VERSION;
   h.precision = precision;
   h.scalar = scalar;
+  h.format = format;
   h.model = request.model;
   h.maxTick = request.maxTick;
   h.duration = request.duration;
@@ -55,12 +56,13 @@ std::vector<std::uint8_t> encodeHeader(const LogHeader& h) {
   writeString(w, h.toolkit);
   writeString(w, h.precision);
   writeString(w, h.scalar);
+  writeString(w, h.format);
   w.u8(static_cast<std::uint8_t>(h.model));
-  w.u64(std::bit_cast<std::uint64_t>(h.maxTick));
-  w.u64(std::bit_cast<std::uint64_t>(h.duration));
+  w.u64(gizmo::bitCast<std::uint64_t>(h.maxTick));
+  w.u64(gizmo::bitCast<std::uint64_t>(h.duration));
   w.varint(h.keys.size());
   for (const TimedKey& k : h.keys) {
-    w.u64(std::bit_cast<std::uint64_t>(k.time));
+    w.u64(gizmo::bitCast<std::uint64_t>(k.time));
     w.svarint(k.key);
     w.u8(k.direction == KeyDirection::Up ? 1 : 0);
   }
@@ -80,17 +82,18 @@ LogHeader decodeHeader(std::span<const std::uint8_t> payload) {
   h.toolkit = readString(r, 256, "toolkit version");
   h.precision = readString(r, 256, "precision");
   h.scalar = readString(r, 256, "scalar");
+  h.format = readString(r, 256, "scalar format");
   const std::uint8_t model = r.u8();
   if (model > 1) throw FormatError("header: unknown motion model", r.position() - 1);
   h.model = static_cast<MotionModel>(model);
-  h.maxTick = std::bit_cast<double>(r.u64());
-  h.duration = std::bit_cast<double>(r.u64());
+  h.maxTick = gizmo::bitCast<double>(r.u64());
+  h.duration = gizmo::bitCast<double>(r.u64());
   const std::size_t at = r.position();
   const std::uint64_t n = r.varint();
   if (n > r.remaining() / 10) throw FormatError("header: more keys than bytes", at);
   for (std::uint64_t i = 0; i < n; ++i) {
     TimedKey k;
-    k.time = std::bit_cast<double>(r.u64());
+    k.time = gizmo::bitCast<double>(r.u64());
     const std::int64_t key = r.svarint();
     if (key < INT32_MIN || key > INT32_MAX) throw FormatError("header: key code out of range", r.position());
     k.key = static_cast<int>(key);

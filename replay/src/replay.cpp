@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <map>
 
+#include "gizmo/core/std_compat.hpp"
 #include "gizmo/replay/chunk.hpp"
 #include "gizmo/replay/decision_digest.hpp"
 #include "gizmo/replay/format_error.hpp"
@@ -80,7 +81,8 @@ PhysicsParams<Real> paramsOf(const OpenedLog& log) {
 template <class Real>
 std::vector<std::uint8_t> headerBytes(const RunRequest& request, const PrecisionChoice& precision,
                                       const GameBoard<Real>& board, const std::vector<std::string>& boardWarnings) {
-  LogHeader h = headerFor(request, precisionName(precision), scalarName<Real>(), paramBytes(board.params()));
+  LogHeader h = headerFor(request, precisionName(precision), scalarName<Real>(), scalarFormat<Real>(),
+                          paramBytes(board.params()));
   h.boardWarnings = boardWarnings;
   return encodeHeader(h);
 }
@@ -326,7 +328,7 @@ void explainParting(const OpenedLog& log, ComparingSink& sink, ReplayReport& rep
   std::uint64_t index = firstIndex;
   for (;; ++index) {
     const std::optional<Decision<Real>> x = theirs.next(), y = ours.next();
-    const bool same = x && y && std::ranges::equal(theirs.lastBytes(), ours.lastBytes());
+    const bool same = x && y && sameElements(theirs.lastBytes(), ours.lastBytes());
     if (!same) {
       if (x) report.logDecision = viewOf(*x, index, theirs.events(), log.gizmoNames);
       if (y) report.runDecision = viewOf(*y, index, ours.events(), log.gizmoNames);
@@ -373,7 +375,7 @@ class DigestChecker final : public BoardObserver<Real> {
       closeChunk();
       readChunk(++chunk_);
       const std::vector<std::uint8_t> ours = stateBytes(board_.saveState());
-      if (!std::ranges::equal(ours, start_.keyframe) || start_.preamble.eventsDone != board_.executedTotal())
+      if (!sameElements(ours, start_.keyframe) || start_.preamble.eventsDone != board_.executedTotal())
         throw Differs{};
     }
   }
@@ -454,7 +456,7 @@ std::optional<ReplayReport> replayByDigests(const OpenedLog& log, std::unique_pt
 bool hasDigests(const OpenedLog& log) {
   const std::vector<ChunkEntry>& chunks = log.reader.chunks();
   return log.reader.end() && !chunks.empty() &&
-         std::ranges::all_of(chunks, [](const ChunkEntry& e) { return e.digest.has_value(); });
+         std::all_of(chunks.begin(), chunks.end(), [](const ChunkEntry& e) { return e.digest.has_value(); });
 }
 
 template <class Real>
@@ -467,7 +469,7 @@ ReplayReport replayAs(const OpenedLog& log, ReplayMethod method) {
     return report;
   }
   // The header this build would write for the run (its toolkit version, its canonical board).
-  const bool headerDiffers = !std::ranges::equal(headerBytes(log.request, log.precision, *board, log.header.boardWarnings), log.reader.headerPayload());
+  const bool headerDiffers = !sameElements(headerBytes(log.request, log.precision, *board, log.header.boardWarnings), log.reader.headerPayload());
   const bool digestsTried = method == ReplayMethod::Digests && hasDigests(log);
   if (digestsTried) {
     if (std::optional<ReplayReport> r = replayByDigests<Real>(log, std::move(board), headerDiffers)) return *r;
@@ -524,6 +526,11 @@ decltype(auto) withLogScalar(const OpenedLog& log, F&& f) {
   return withRecordablePrecision(log.precision, [&]<class Real>() -> decltype(auto) {
     if (scalarName<Real>() != log.header.scalar)
       throw FormatError("the log was made with " + log.header.scalar + ", this build computes " + scalarName<Real>(), 0);
+    if (scalarFormat<Real>() != log.header.format)
+      throw FormatError("the log's " + log.header.scalar + " is " + log.header.format + ", this build's " +
+                            scalarName<Real>() + " is " + scalarFormat<Real>() +
+                            ": the formats differ, so the log cannot be replayed here",
+                        0);
     return f.template operator()<Real>();
   });
 }

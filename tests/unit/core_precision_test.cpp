@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "support/board_builder.hpp"
 
@@ -37,6 +38,24 @@ void expectDropTime(double relativeTolerance) {
 }
 
 // A handful of ulps of each type: the time is one closed-form root.
+// epsilonOf is 2^(1 - digits) for every hardware float: numeric_limits' epsilon for the IEEE
+// formats, and the same for ppc64el's double-double, where numeric_limits says 2^-1074. The
+// next value after 1 is 1 + epsilon, and half of it is lost to rounding (to even).
+template <class Real>
+void expectUnitRoundoff() {
+  const Real one(1), eps = epsilonOf<Real>();
+  EXPECT_EQ(eps, std::ldexp(one, 1 - std::numeric_limits<Real>::digits)) << scalarName<Real>();
+  EXPECT_GT(Real(one + eps), one) << scalarName<Real>();
+  EXPECT_EQ(Real(one + Real(eps / 2)), one) << scalarName<Real>();
+  if (std::numeric_limits<Real>::is_iec559) EXPECT_EQ(eps, std::numeric_limits<Real>::epsilon()) << scalarName<Real>();
+}
+
+TEST(PrecisionLadder, EpsilonIsTheUnitRoundoffOfEachHardwareFloat) {
+  expectUnitRoundoff<float>();
+  expectUnitRoundoff<double>();
+  expectUnitRoundoff<long double>();
+}
+
 TEST(PrecisionLadder, DropTimeToEachTypesPrecision) {
   expectDropTime<float>(8 * 1.2e-7);
   expectDropTime<double>(8 * 2.3e-16);

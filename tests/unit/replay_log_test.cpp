@@ -99,12 +99,13 @@ struct Recorded {
 };
 
 // Records the run into a temporary file with LogWriter and returns the file's bytes.
-Recorded record(const RunRequest& request, const PrecisionChoice& precision, const std::string& stem) {
+Recorded record(const RunRequest& request, const PrecisionChoice& precision, const std::string& stem,
+                const std::vector<std::string>& boardWarnings = {}) {
   const std::string path = tempPath(stem);
   Recorded out;
   {
     LogWriter writer(path);
-    out.result = recordRun(request, precision, writer);
+    out.result = recordRun(request, precision, writer, boardWarnings);
   }
   out.bytes = readBytes(path);
   std::remove(path.c_str());
@@ -138,6 +139,17 @@ void resealFrame(Bytes& b, std::size_t frameAt) {
   const std::uint32_t length = readU32(b, frameAt + 1);
   const std::span<const std::uint8_t> payload(b.data() + frameAt + kFrameHeaderSize, length);
   putU64(b, frameAt + kFrameHeaderSize + length, checksum64(payload, (std::uint64_t(b.at(frameAt)) << 32) | length));
+}
+
+// The log with its header frame's payload replaced by h's encoding, which must have the same size,
+// framed again with a correct checksum: every byte checks.
+Bytes withHeader(const Bytes& log, const LogHeader& h) {
+  const Bytes payload = encodeHeader(h);
+  EXPECT_EQ(payload.size(), readU32(log, kFileHeaderSize + 1)) << "the edited header must keep its size";
+  Bytes edited = log;
+  std::copy(payload.begin(), payload.end(), edited.begin() + std::ptrdiff_t(kFileHeaderSize + kFrameHeaderSize));
+  resealFrame(edited, kFileHeaderSize);
+  return edited;
 }
 
 // The end of the header frame (where the first chunk starts) and the index frame's offset, read
@@ -310,13 +322,7 @@ TEST(ReplayLog, ReplayFindsTheFirstDecisionThatDiffers) {
   LogHeader h = decodeHeader(original.reader.headerPayload());
   const double recordedTime = h.keys[0].time;
   h.keys[0].time = recordedTime - 0.01;  // still inside the same tick for flippers.keys (0.10 → 0.09)
-  const Bytes payload = encodeHeader(h);
-  ASSERT_EQ(payload.size(), original.reader.headerPayload().size()) << "a key's time is a fixed 8 bytes";
-  Bytes tampered = rec.bytes;
-  std::copy(payload.begin(), payload.end(), tampered.begin() + std::ptrdiff_t(kFileHeaderSize + kFrameHeaderSize));
-  resealFrame(tampered, kFileHeaderSize);
-
-  const OpenedLog log = openBytes(tampered);  // every checksum holds
+  const OpenedLog log = openBytes(withHeader(rec.bytes, h));  // a key's time is a fixed 8 bytes
   ASSERT_EQ(log.request.keys.size(), original.request.keys.size());
   EXPECT_EQ(log.request.keys[0].time, recordedTime - 0.01);
   const ReplayReport report = replayLog(log);
@@ -374,19 +380,42 @@ TEST(ReplayLog, AHeaderFromAnotherVersionIsNoted) {
   LogHeader h = decodeHeader(original.reader.headerPayload());
   ASSERT_FALSE(h.toolkit.empty());
   h.toolkit = std::string(h.toolkit.size(), '9');
-  const Bytes payload = encodeHeader(h);
-  ASSERT_EQ(payload.size(), original.reader.headerPayload().size());
-  Bytes tampered = rec.bytes;
-  std::copy(payload.begin(), payload.end(), tampered.begin() + std::ptrdiff_t(kFileHeaderSize + kFrameHeaderSize));
-  resealFrame(tampered, kFileHeaderSize);
-
-  const OpenedLog log = openBytes(tampered);
+  const OpenedLog log = openBytes(withHeader(rec.bytes, h));
   for (const ReplayMethod method : {ReplayMethod::Digests, ReplayMethod::Records}) {
     const ReplayReport report = replayLog(log, method);
     EXPECT_TRUE(report.identical) << describe(report);
     EXPECT_PRED2(contains, report.note, "written by another version (" + h.toolkit + ")");
   }
   EXPECT_EQ(replayLog(original).note, "");
+}
+
+// A log whose header names another binary format for its scalar (as a long-double log of another
+// machine does): replaying it and comparing it with a log of this build's format are refused,
+// naming both formats.
+TEST(ReplayLog, ALogOfAnotherScalarFormatIsRefused) {
+  const Recorded& rec = specExample(5.0);
+  const OpenedLog original = openBytes(rec.bytes);
+  LogHeader h = decodeHeader(original.reader.headerPayload());
+  ASSERT_EQ(h.format, "binary64");
+  h.format = "binary32";  // the same length, so the frame keeps its size
+  const OpenedLog log = openBytes(withHeader(rec.bytes, h));
+  const std::string replayed = messageOf([&] { (void)replayLog(log); });
+  EXPECT_TRUE(contains(replayed, "binary32") && contains(replayed, "binary64") && contains(replayed, "formats differ"))
+      << replayed;
+  const std::string compared = messageOf([&] { (void)diffLogs(original, log, 0, false); });
+  EXPECT_TRUE(contains(compared, "different formats (binary64, binary32)")) << compared;
+}
+
+TEST(ReplayLog, TheHeaderNamesTheScalarsFormat) {
+  const RunRequest request = requestFor("boards/spec-example.txt", MotionModel::Ballistic, 0.2);
+  for (const auto& [precision, format] :
+       {std::pair{Precision::Float, "binary32"}, {Precision::Double, "binary64"},
+        {Precision::LongDouble, hardwareFormatOf<long double>()}, {Precision::Float128, "binary128"}}) {
+    const Recorded rec = record(request, PrecisionChoice{precision, 0}, "format");
+    EXPECT_EQ(openBytes(rec.bytes).header.format, format) << precisionName(PrecisionChoice{precision, 0});
+  }
+  const Recorded mpfr = record(request, PrecisionChoice{Precision::Mpfr, 128}, "format");
+  EXPECT_EQ(openBytes(mpfr.bytes).header.format, "mpfr:131");
 }
 
 // An index whose first chunk digest was changed, framed again with a correct checksum: the run
@@ -738,16 +767,24 @@ TEST(ReplayLog, BadFilesSayWhatIsWrong) {
   }
   {
     Bytes b = good;
-    b[8] = 4;  // u16 format version, little-endian
+    b[8] = 5;  // u16 format version, little-endian
     b[9] = 0;
     const std::string message = openedMessage(b);
-    EXPECT_TRUE(contains(message, "version 4 is newer")) << message;
+    EXPECT_TRUE(contains(message, "version 5 is newer than this build reads (4)")) << message;
   }
-  for (const std::uint8_t old : {1, 2}) {  // before chunk digests; before the board's warnings
+  {
+    Bytes b = good;
+    b[8] = 0;  // version 256: the high byte counts
+    b[9] = 1;
+    const std::string message = openedMessage(b);
+    EXPECT_TRUE(contains(message, "version 256 is newer")) << message;
+  }
+  // Before chunk digests; before the board's warnings; before the scalar's binary format.
+  for (const std::uint8_t old : {1, 2, 3}) {
     Bytes b = good;
     b[8] = old;
     const std::string message = openedMessage(b);
-    EXPECT_TRUE(contains(message, "version " + std::to_string(old) + " is older than this build reads (3); record the run again"))
+    EXPECT_TRUE(contains(message, "version " + std::to_string(old) + " is older than this build reads (4); record the run again"))
         << message;
   }
   {
@@ -959,27 +996,50 @@ TEST(ReplayLog, DecisionStreamSeesEveryExecutedEvent) {
 
 // --- golden logs -------------------------------------------------------------------------------------------
 
+// One line of fixtures/logs/golden.txt, which scripts/dev cross-check reads too.
 struct GoldenCase {
-  const char* file;  // in fixtures/logs/
-  const char* board;
-  MotionModel model;
-  Precision precision;
-  double seconds;
-  bool keys;  // fixtures/keys/flippers.keys
+  std::string file;  // in fixtures/logs/
+  std::string board;  // in fixtures/
+  MotionModel model = MotionModel::Ballistic;
+  PrecisionChoice precision;
+  double seconds = 0;
+  bool keys = false;  // fixtures/keys/flippers.keys
+  std::string recordedOn;  // "host", or the cross target whose scalar format it holds
 };
 void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.file; }
 
-const GoldenCase kGolden[] = {
-    {"spec-example-5s-ballistic-double.gzlog", "boards/spec-example.txt", MotionModel::Ballistic,
-     Precision::Double, 5.0, true},
-    // Long enough for keyframes: their bytes (the board's state) must agree across builds too.
-    {"spec-example-25s-ballistic-double.gzlog", "boards/spec-example.txt", MotionModel::Ballistic,
-     Precision::Double, 25.0, true},
-    {"spec-example-5s-classic-double.gzlog", "boards/spec-example.txt", MotionModel::Classic, Precision::Double,
-     5.0, true},
-    {"four-balls-meeting-3s-ballistic-long-double.gzlog", "boards/scenes/four-balls-meeting.txt",
-     MotionModel::Ballistic, Precision::LongDouble, 3.0, false},
-};
+std::vector<GoldenCase> goldenCases() {
+  std::ifstream in(fixture("logs/golden.txt"));
+  std::vector<GoldenCase> cases;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream words(line);
+    GoldenCase g;
+    std::string model, precision, keys;
+    words >> g.file >> g.board >> model >> precision >> g.seconds >> keys >> g.recordedOn;
+    const std::optional<PrecisionChoice> p = parsePrecision(precision);
+    if (!words || !p || (model != "ballistic" && model != "classic") || (keys != "keys" && keys != "-"))
+      throw std::runtime_error("fixtures/logs/golden.txt: cannot read the line '" + line + "'");
+    g.model = model == "ballistic" ? MotionModel::Ballistic : MotionModel::Classic;
+    g.precision = *p;
+    g.keys = keys == "keys";
+    cases.push_back(g);
+  }
+  if (cases.empty()) throw std::runtime_error("fixtures/logs/golden.txt lists no log");
+  return cases;
+}
+
+// The board reader's warnings about a fixture board as `gizmo record fixtures/BOARD` gives them,
+// run from the tree's root: scripts/dev cross-check records the golden runs that way on every
+// target and compares the bytes, and the header keeps the warnings.
+std::vector<std::string> goldenBoardWarnings(const std::string& board) {
+  std::ifstream in(fixture(board), std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<std::string> out;
+  for (const io::Diagnostic& d : io::readBoardString(text, "fixtures/" + board).warnings) out.push_back(io::format(d));
+  return out;
+}
 
 bool updatingGolden() {
   const char* v = std::getenv("GIZMO_UPDATE_GOLDEN");
@@ -993,10 +1053,24 @@ class ReplayGolden : public ::testing::TestWithParam<GoldenCase> {};
 // GIZMO_UPDATE_GOLDEN=1 the committed file is rewritten instead.
 TEST_P(ReplayGolden, ThisBuildRecordsTheCommittedLog) {
   const GoldenCase& g = GetParam();
+  const std::string path = fixture("logs/" + g.file);
+  // A log recorded on another machine (long double as binary128, on aarch64) is checked by
+  // scripts/dev cross-check on the targets that compute its format; where the format differs
+  // from this build's, replaying it must be refused.
+  if (g.recordedOn != "host") {
+    const OpenedLog committed = openLog(path);
+    const std::string here =
+        withRecordablePrecision(committed.precision, []<class Real>() { return scalarFormat<Real>(); });
+    if (committed.header.format != here)
+      EXPECT_THROW(replayLog(committed), FormatError) << "a log of another format must not replay here";
+    else
+      EXPECT_TRUE(replayLog(committed).identical);
+    GTEST_SKIP() << g.file << " was recorded on " << g.recordedOn << " (" << committed.header.format
+                 << "); scripts/dev cross-check compares its bytes there";
+  }
   const RunRequest request = requestFor(g.board, g.model, g.seconds, g.keys);
-  const Recorded fresh = record(request, PrecisionChoice{g.precision, 0}, "golden");
+  const Recorded fresh = record(request, g.precision, "golden", goldenBoardWarnings(g.board));
   ASSERT_TRUE(fresh.result.completed) << fresh.result.error;
-  const std::string path = fixture(std::string("logs/") + g.file);
   if (updatingGolden()) {
     std::filesystem::create_directories(fixture("logs"));
     writeBytes(path, fresh.bytes);
@@ -1019,6 +1093,7 @@ TEST_P(ReplayGolden, ThisBuildRecordsTheCommittedLog) {
   EXPECT_EQ(a.duration, b.duration);
   EXPECT_EQ(a.board, b.board);
   EXPECT_EQ(a.boardHash, b.boardHash);
+  EXPECT_EQ(a.boardWarnings, b.boardWarnings) << "the board reader's warnings, as gizmo record gives them";
   EXPECT_EQ(a.params, b.params) << "this build derives other simulation parameters from the board";
   ASSERT_EQ(a.keys.size(), b.keys.size());
   for (std::size_t i = 0; i < a.keys.size(); ++i) {
@@ -1049,7 +1124,7 @@ TEST_P(ReplayGolden, ThisBuildRecordsTheCommittedLog) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(FixturesLogs, ReplayGolden, ::testing::ValuesIn(kGolden),
+INSTANTIATE_TEST_SUITE_P(FixturesLogs, ReplayGolden, ::testing::ValuesIn(goldenCases()),
                          [](const ::testing::TestParamInfo<GoldenCase>& info) {
                            std::string name = info.param.file;
                            name = name.substr(0, name.find('.'));

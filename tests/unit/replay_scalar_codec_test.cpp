@@ -7,7 +7,6 @@
 #include <quadmath.h>
 
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -18,6 +17,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "gizmo/core/std_compat.hpp"
 #include "gizmo/replay/bytes.hpp"
 #include "gizmo/replay/format_error.hpp"
 #include "support/scalar_fixture.hpp"
@@ -282,7 +282,7 @@ TEST(ReplayScalarCodec, DoubleExactTextMatchesPrintf) {
   SCOPED_TRACE(seedTrace());
   std::mt19937_64 rng(kSeed);
   for (int i = 0; i < 5000; ++i) {
-    const double d = std::bit_cast<double>(rng());
+    const double d = gizmo::bitCast<double>(rng());
     if (!std::isfinite(d)) continue;
     char text[64];
     std::snprintf(text, sizeof text, "%a", d);

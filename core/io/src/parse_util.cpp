@@ -1,11 +1,12 @@
 #include "parse_util.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
+
+#include "gizmo/core/decimal_text.hpp"
 
 namespace gizmo::io::detail {
 
@@ -81,15 +82,15 @@ Number parseDecimal(std::string_view token, const std::string& what) {
       n.problem = what + " must be a number, not " + show(token);
     return n;
   }
-  // std::from_chars takes no leading '+'.
+  // std::from_chars (parseDecimalDouble) takes no leading '+'.
   const std::string_view digits = token[0] == '+' ? token.substr(1) : token;
   double v = 0;
-  const auto r = std::from_chars(digits.data(), digits.data() + digits.size(), v, std::chars_format::general);
-  if (r.ec == std::errc::result_out_of_range) {
+  const DecimalParse r = parseDecimalDouble(digits, v);
+  if (r == DecimalParse::OutOfRange) {
     n.problem = what + " " + show(token) + " is out of range";
     return n;
   }
-  if (r.ec != std::errc() || r.ptr != digits.data() + digits.size() || !std::isfinite(v)) {
+  if (r != DecimalParse::Ok || !std::isfinite(v)) {
     n.problem = what + " must be a number, not " + show(token);
     return n;
   }
@@ -119,11 +120,7 @@ Whole parseWhole(std::string_view token, const std::string& what) {
   return w;
 }
 
-std::string shortest(double v) {
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
+std::string shortest(double v) { return shortestDecimal(v); }
 
 LineIndex::LineIndex(std::string_view content) : bom_(startsWithBom(content)) {
   starts_.push_back(0);

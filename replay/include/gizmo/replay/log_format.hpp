@@ -8,7 +8,7 @@ namespace gizmo::replay {
 
 inline constexpr std::string_view kMagic = "GIZMOLOG";
 inline constexpr std::string_view kTrailerMagic = "GIZMOEND";
-inline constexpr std::uint16_t kFormatVersion = 3;
+inline constexpr std::uint16_t kFormatVersion = 4;
 inline constexpr std::size_t kFileHeaderSize = 12;  // magic, u16 version, u16 reserved
 inline constexpr std::size_t kFrameHeaderSize = 5;  // u8 type, u32 payload length
 inline constexpr std::size_t kFrameChecksumSize = 8;

@@ -18,6 +18,7 @@ struct LogHeader {
   std::string toolkit;    // the gizmo version that wrote the log
   std::string precision;  // as requested ("double", "mpfr:256"): selects the scalar again
   std::string scalar;     // as computed ("mpfr:261"): checked when the log is read back
+  std::string format;     // the scalar's binary format ("binary64", "x87-extended80"): likewise
   MotionModel model = MotionModel::Ballistic;
   double maxTick = 0.05;
   double duration = 0;
@@ -25,14 +26,14 @@ struct LogHeader {
   std::string board;       // canonical text form (io::writeTextBoard)
   std::uint64_t boardHash = 0;  // checksum64 of the board text
   // What the board reader said about the file the board came from (io::format of each warning):
-  // empty when it was read as written. Format version 3.
+  // empty when it was read as written. Since format version 3.
   std::vector<std::string> boardWarnings;
   std::vector<std::uint8_t> params;  // PhysicsParams in the scalar's exact encoding (paramBytes)
 };
 
 // The header of a run about to be recorded in scalar `precision`.
 LogHeader headerFor(const RunRequest& request, const std::string& precision, const std::string& scalar,
-                    std::vector<std::uint8_t> params);
+                    const std::string& format, std::vector<std::uint8_t> params);
 std::vector<std::uint8_t> encodeHeader(const LogHeader& h);
 LogHeader decodeHeader(std::span<const std::uint8_t> payload);  // throws FormatError
 // The run the header describes; throws FormatError when the embedded board does not read back

@@ -2,9 +2,8 @@
 // Exact, portable encodings of the scalars of the precision ladder (gizmo/core/math/scalar.hpp).
 //
 // ScalarCodec<Real> gives the raw form. Fixed-width types: kWidth bytes holding the IEEE bits
-// little-endian (float 4, double 8, Float128 16 = binary128), and for long double the x87 80-bit
-// extended format in 10 bytes: bytes 0..7 the 64-bit significand with its explicit integer bit,
-// bytes 8..9 the sign bit (bit 15) over the 15-bit biased exponent, both little-endian.
+// little-endian (float 4, double 8, Float128 16 = binary128), and for long double its format on
+// this target (below: x87's 80-bit extended format in 10 bytes on x86).
 //
 // writeScalar/readScalar give the compact form the log uses, relative to a base value both sides
 // know (typically the previous value of the same quantity). Fixed-width types: x = bytes(value)
@@ -16,6 +15,7 @@
 //
 // MpfrReal ignores the base and is written exactly at whatever precision it has (see
 // ScalarCodec<MpfrReal>).
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <concepts>
@@ -24,7 +24,9 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <string_view>
 
+#include "gizmo/core/std_compat.hpp"
 #include "gizmo/core/math/scalar.hpp"
 #include "gizmo/replay/bytes.hpp"
 
@@ -56,8 +58,8 @@ struct ScalarCodec<float> {
   static_assert(std::numeric_limits<float>::is_iec559 && sizeof(float) == 4);
   static constexpr std::size_t kWidth = 4;
   using Bits = std::uint32_t;  // lets the compact form work on one register
-  static Bits toBits(float v) { return std::bit_cast<Bits>(v); }
-  static float fromBits(Bits b) { return std::bit_cast<float>(b); }
+  static Bits toBits(float v) { return gizmo::bitCast<Bits>(v); }
+  static float fromBits(Bits b) { return gizmo::bitCast<float>(b); }
   static std::array<std::uint8_t, kWidth> toBytes(const float& v) {
     return detail::wordToBytes(toBits(v));
   }
@@ -71,8 +73,8 @@ struct ScalarCodec<double> {
   static_assert(std::numeric_limits<double>::is_iec559 && sizeof(double) == 8);
   static constexpr std::size_t kWidth = 8;
   using Bits = std::uint64_t;
-  static Bits toBits(double v) { return std::bit_cast<Bits>(v); }
-  static double fromBits(Bits b) { return std::bit_cast<double>(b); }
+  static Bits toBits(double v) { return gizmo::bitCast<Bits>(v); }
+  static double fromBits(Bits b) { return gizmo::bitCast<double>(b); }
   static std::array<std::uint8_t, kWidth> toBytes(const double& v) {
     return detail::wordToBytes(toBits(v));
   }
@@ -81,21 +83,29 @@ struct ScalarCodec<double> {
   }
 };
 
-// The 10 bytes are the value's first 10 bytes in memory on a little-endian x87 target; the rest
-// of the 16-byte object is padding and never written.
+// long double in the format this target computes (hardwareFormatOf<long double>(), which the
+// log's header names): x87's 80-bit extended format in 10 bytes (bytes 0..7 the 64-bit
+// significand with its explicit integer bit, bytes 8..9 the sign bit over the 15-bit biased
+// exponent, both little-endian: the value's first 10 bytes in memory on x86, the rest of the
+// object being padding); IEEE binary128 in 16 bytes and binary64 in 8, the bit pattern
+// little-endian; a double-double (ppc64) in 16 bytes, its high double and then its low one,
+// each little-endian.
 template <>
 struct ScalarCodec<long double> {
-  static_assert(std::numeric_limits<long double>::digits == 64 &&
-                    std::numeric_limits<long double>::max_exponent == 16384 &&
-                    sizeof(long double) >= 10 && std::endian::native == std::endian::little,
-                "long double must be the x87 80-bit extended format on a little-endian target");
-  static constexpr std::size_t kWidth = 10;
+  static constexpr std::string_view kFormat = hardwareFormatOf<long double>();
+  static constexpr bool kX87 = kFormat == "x87-extended80";
+  static constexpr bool kDoubleDouble = kFormat == "double-double";
+  static constexpr std::size_t kWidth = kX87 ? 10 : kFormat == "binary64" ? 8 : 16;
+  static_assert(sizeof(long double) >= kWidth);
+  static_assert(!kX87 || std::endian::native == std::endian::little, "x87 is little-endian");
   static std::array<std::uint8_t, kWidth> toBytes(const long double& v) {
     std::array<std::uint8_t, kWidth> out;
     std::memcpy(out.data(), &v, kWidth);
+    if constexpr (std::endian::native == std::endian::big) toLittleEndianOrder(out);
     return out;
   }
-  static long double fromBytes(const std::array<std::uint8_t, kWidth>& b) {
+  static long double fromBytes(std::array<std::uint8_t, kWidth> b) {
+    if constexpr (std::endian::native == std::endian::big) toLittleEndianOrder(b);
     long double v = 0;
     std::memcpy(&v, b.data(), kWidth);
     return v;
@@ -103,14 +113,24 @@ struct ScalarCodec<long double> {
   // x87 arithmetic only produces encodings whose integer bit is set exactly when the exponent
   // field is non-zero; the others (unnormals, pseudo-denormals, pseudo-infinities and -NaNs)
   // are invalid operands or aliases. readScalar refuses them, so a decoded value is one the
-  // simulator could have computed.
+  // simulator could have computed. Every bit pattern of the other formats is a value.
   static bool isCanonical(const std::array<std::uint8_t, kWidth>& b) {
+    if constexpr (!kX87) return true;
     const bool integerBit = (b[7] & 0x80) != 0;
     const unsigned exponent = (b[8] | (unsigned{b[9]} << 8)) & 0x7FFFu;
     return integerBit == (exponent != 0);
   }
+
+ private:
+  // A big-endian target holds each IEEE word highest byte first (for a double-double, each of
+  // its two doubles); the log holds them lowest first. The swap is its own inverse.
+  static void toLittleEndianOrder(std::array<std::uint8_t, kWidth>& b) {
+    const std::size_t word = kDoubleDouble ? 8 : kWidth;
+    for (std::size_t at = 0; at < kWidth; at += word) std::reverse(b.begin() + at, b.begin() + at + word);
+  }
 };
 
+#if GIZMO_HAS_MULTIPRECISION
 template <>
 struct ScalarCodec<Float128> {
   static_assert(sizeof(__float128) == 16 && std::endian::native == std::endian::little,
@@ -143,6 +163,7 @@ struct ScalarCodec<MpfrReal> {
   static void write(ByteWriter& out, const MpfrReal& value);
   static MpfrReal read(ByteReader& in);
 };
+#endif  // GIZMO_HAS_MULTIPRECISION
 
 namespace detail {
 
@@ -253,11 +274,13 @@ inline bool sameEncoding(const Real& a, const Real& b) {
   using Codec = ScalarCodec<Real>;
   if constexpr (detail::WordCodec<Real>) return Codec::toBits(a) == Codec::toBits(b);
   else if constexpr (detail::FixedWidthCodec<Real>) return Codec::toBytes(a) == Codec::toBytes(b);
+#if GIZMO_HAS_MULTIPRECISION
   else {
     const mpfr_srcptr x = a.backend().data(), y = b.backend().data();
     if (mpfr_nan_p(x) || mpfr_nan_p(y)) return mpfr_nan_p(x) && mpfr_nan_p(y);
     return mpfr_equal_p(x, y) && mpfr_signbit(x) == mpfr_signbit(y);
   }
+#endif
 }
 
 // Writes `value` in the compact form relative to `base` (ignored for MpfrReal).
@@ -301,9 +324,11 @@ template <>
 std::string exactText<double>(const double& value);
 template <>
 std::string exactText<long double>(const long double& value);
+#if GIZMO_HAS_MULTIPRECISION
 template <>
 std::string exactText<Float128>(const Float128& value);
 template <>
 std::string exactText<MpfrReal>(const MpfrReal& value);
+#endif
 
 }  // namespace gizmo::replay

@@ -19,6 +19,8 @@ extern template std::unique_ptr<GameBoard<float>> buildBoard<float>(const BoardS
 extern template std::unique_ptr<GameBoard<double>> buildBoard<double>(const BoardSpec&, PhysicsParams<double>);
 extern template std::unique_ptr<GameBoard<long double>> buildBoard<long double>(const BoardSpec&,
                                                                                 PhysicsParams<long double>);
+#if GIZMO_HAS_MULTIPRECISION
 extern template std::unique_ptr<GameBoard<Float128>> buildBoard<Float128>(const BoardSpec&, PhysicsParams<Float128>);
 extern template std::unique_ptr<GameBoard<MpfrReal>> buildBoard<MpfrReal>(const BoardSpec&, PhysicsParams<MpfrReal>);
+#endif
 }  // namespace gizmo

@@ -217,6 +217,8 @@ namespace gizmo {
 extern template class GameBoard<float>;
 extern template class GameBoard<double>;
 extern template class GameBoard<long double>;
+#if GIZMO_HAS_MULTIPRECISION
 extern template class GameBoard<Float128>;
 extern template class GameBoard<MpfrReal>;
+#endif
 }  // namespace gizmo

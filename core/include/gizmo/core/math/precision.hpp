@@ -61,6 +61,22 @@ inline bool recordable(const PrecisionChoice& p) {
          p.kind == Precision::Float128 || p.kind == Precision::Mpfr;
 }
 
+// The precisions this build can run: every one in the full build, the hardware floats in the
+// portable build (GIZMO_PORTABLE).
+inline bool builtHere(const PrecisionChoice& p) {
+  return GIZMO_HAS_MULTIPRECISION || p.kind == Precision::Float || p.kind == Precision::Double ||
+         p.kind == Precision::LongDouble;
+}
+
+inline std::string notBuiltHereMessage(const PrecisionChoice& p) {
+  return "this is the portable build of gizmo, which has float, double and long-double: " + precisionName(p) +
+         " needs the full build (docs/determinism.md)";
+}
+
+[[noreturn]] inline void throwNotBuiltHere(const PrecisionChoice& p) {
+  throw std::invalid_argument(notBuiltHereMessage(p));
+}
+
 // Calls f.template operator()<Real>() for the chosen scalar, among those a log can hold; throws
 // std::invalid_argument for the others. For MPFR the thread's default precision is set first.
 template <class F>
@@ -69,11 +85,14 @@ decltype(auto) withRecordablePrecision(const PrecisionChoice& p, F&& f) {
     case Precision::Float: return f.template operator()<float>();
     case Precision::Double: return f.template operator()<double>();
     case Precision::LongDouble: return f.template operator()<long double>();
+#if GIZMO_HAS_MULTIPRECISION
     case Precision::Float128: return f.template operator()<Float128>();
     case Precision::Mpfr:
       setMpfrBits(p.mpfrBits);
       return f.template operator()<MpfrReal>();
+#endif
     default:
+      if (recordable(p)) throwNotBuiltHere(p);
       throw std::invalid_argument("a " + precisionName(p) + " run cannot be recorded: the log format has no " +
                                   "encoding for it (record with float, double, long-double, float128 or mpfr:BITS)");
   }
@@ -83,10 +102,14 @@ decltype(auto) withRecordablePrecision(const PrecisionChoice& p, F&& f) {
 template <class F>
 decltype(auto) withPrecision(const PrecisionChoice& p, F&& f) {
   switch (p.kind) {
+#if GIZMO_HAS_MULTIPRECISION
     case Precision::Bin50: return f.template operator()<Bin50>();
     case Precision::Bin100: return f.template operator()<Bin100>();
     case Precision::Rational: return f.template operator()<Rational>();
-    default: return withRecordablePrecision(p, std::forward<F>(f));
+#endif
+    default:
+      if (!builtHere(p)) throwNotBuiltHere(p);
+      return withRecordablePrecision(p, std::forward<F>(f));
   }
 }
 

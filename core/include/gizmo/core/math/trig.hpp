@@ -20,9 +20,11 @@
 #include <type_traits>
 #include <vector>
 
-#include <mpfr.h>
-
 #include "gizmo/core/math/scalar.hpp"
+
+#if GIZMO_HAS_MULTIPRECISION
+#include <mpfr.h>
+#endif
 
 namespace gizmo::math {
 
@@ -34,6 +36,7 @@ inline constexpr double kHalfPiParts[5] = {0x1.921fb54442d18p+0, 0x1.1a62633145c
                                            -0x1.f1976b7ed8fbcp-110, 0x1.4cf98e804177dp-164,
                                            0x1.31d89cd9128a5p-218};
 
+#if GIZMO_HAS_MULTIPRECISION
 // pi/2 as a sum of doubles from MPFR's correctly rounded pi, for scalars wider than the table
 // above (cpp_bin_float 50 and 100): enough parts to hold `bits` bits. Computed once per width.
 inline std::vector<double> halfPiPartsFromMpfr(long bits) {
@@ -50,6 +53,7 @@ inline std::vector<double> halfPiPartsFromMpfr(long bits) {
   mpfr_clear(rest);
   return parts;
 }
+#endif
 
 // hi + lo = the sum of the parts, hi the nearest Real and lo the rest (the parts are each the
 // rounding of what the previous ones leave, so hi is within an ulp of their sum).
@@ -76,11 +80,16 @@ inline void halfPiSplit(Real& hi, Real& lo) {
   } else if constexpr (digits <= 113) {
     sumHalfPiParts(kHalfPiParts, 5, hi, lo);
   } else {
+#if GIZMO_HAS_MULTIPRECISION
     static const std::vector<double> parts = halfPiPartsFromMpfr(2L * digits + 64);
     sumHalfPiParts(parts.data(), parts.size(), hi, lo);
+#else
+    static_assert(digits <= 113, "the portable build's scalars are at most 113 bits wide");
+#endif
   }
 }
 
+#if GIZMO_HAS_MULTIPRECISION
 // MPFR: the precision is chosen at run time, so take pi from MPFR itself (a correctly rounded
 // constant, not a libm call) at twice the working precision plus a margin.
 inline void halfPiSplit(MpfrReal& hi, MpfrReal& lo) {
@@ -98,15 +107,16 @@ inline void halfPiSplit(MpfrReal& hi, MpfrReal& lo) {
   hi = h;
   lo = l;
 }
+#endif
 
 // Bits of Real's significand.
 template <class Real>
 inline long precisionBits() {
-  if constexpr (std::is_same_v<Real, MpfrReal>) {
-    return mpfrBits();
-  } else {
+#if GIZMO_HAS_MULTIPRECISION
+  if constexpr (std::is_same_v<Real, MpfrReal>) return mpfrBits();
+  else
+#endif
     return std::numeric_limits<Real>::digits;
-  }
 }
 
 // s + e == a + b exactly, s the rounded sum (Knuth's TwoSum; no condition on the magnitudes).
