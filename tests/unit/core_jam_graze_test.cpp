@@ -30,6 +30,7 @@ class JammedBoard final : public BoardAccess<double> {
   void reportRule(ModelRule rule, GizmoId, GizmoId) override { rules.push_back(rule); }
   bool jammed() const override { return true; }
   void releaseContactsOn(GizmoId) override {}
+  bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return true; }
 
   static std::array<Ball<double>, 3> ballsWith(Vec2<double> bVelocity) {
     return {Ball<double>("A", {10, 10}, {0, 0}), Ball<double>("B", {10.5, 10}, bVelocity),

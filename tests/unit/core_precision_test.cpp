@@ -47,7 +47,9 @@ void expectUnitRoundoff() {
   EXPECT_EQ(eps, std::ldexp(one, 1 - std::numeric_limits<Real>::digits)) << scalarName<Real>();
   EXPECT_GT(Real(one + eps), one) << scalarName<Real>();
   EXPECT_EQ(Real(one + Real(eps / 2)), one) << scalarName<Real>();
-  if (std::numeric_limits<Real>::is_iec559) EXPECT_EQ(eps, std::numeric_limits<Real>::epsilon()) << scalarName<Real>();
+  if (std::numeric_limits<Real>::is_iec559) {
+    EXPECT_EQ(eps, std::numeric_limits<Real>::epsilon()) << scalarName<Real>();
+  }
 }
 
 TEST(PrecisionLadder, EpsilonIsTheUnitRoundoffOfEachHardwareFloat) {
