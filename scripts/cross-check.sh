@@ -8,7 +8,7 @@
 # A golden log of another format must be refused by the target (exit 2, "formats differ"): it is
 # counted as such, not compared. A difference prints the target and the first decision where the
 # logs part (index, board time, both decisions in hex floats), and the check exits 1. At the end,
-# one table: target, logs compared, identical, build and check seconds.
+# one table: target, logs compared, identical, build seconds (wall and CPU) and check seconds.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 all="x86_64-gcc-O0 x86_64-gcc-O3 x86_64-clang i686 aarch64 riscv64 ppc64el s390x wasm32"
@@ -32,6 +32,11 @@ trap 'rm -rf "$work"' EXIT
 
 failed=0
 table=()
+# The CPU seconds (user + system) of every command this script has waited for so far: a target's
+# build measured in them does not depend on what else the machine is doing, as wall seconds do.
+childCpuSeconds() {
+  times | awk 'NR == 2 { split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%.0f", u[1] * 60 + u[2] + s[1] * 60 + s[2] }'
+}
 problem() {  # TARGET TEXT...
   echo "cross-check: $1: ${*:2}" >&2
   failed=1
@@ -39,13 +44,15 @@ problem() {  # TARGET TEXT...
 
 for target in "${targets[@]}"; do
   started=$SECONDS
+  cpuStarted=$(childCpuSeconds)
   if ! scripts/cross-build.sh "$target" > "$work/build.log" 2>&1; then
     problem "$target" "the build failed or warned:"
     tail -n 30 "$work/build.log" >&2
-    table+=("$target - - - $((SECONDS - started)) - build-failed")
+    table+=("$target - - - $((SECONDS - started)) - - build-failed")
     continue
   fi
   built=$SECONDS
+  buildCpu=$(( $(childCpuSeconds) - cpuStarted ))
   [ "$target" = wasm32 ] && wasmBuilt=1
   run=build/cross-$target/gizmo-run
   compared=0 identical=0 otherFormat=0
@@ -91,7 +98,7 @@ for target in "${targets[@]}"; do
   verdict=identical
   [ $identical -ne $compared ] && verdict=DIFFERENT
   [ $compared -eq 0 ] && { verdict=nothing-compared; failed=1; }
-  table+=("$target $compared $identical $otherFormat $((built - started)) $((SECONDS - built)) $verdict")
+  table+=("$target $compared $identical $otherFormat $((built - started)) $buildCpu $((SECONDS - built)) $verdict")
 done
 
 # The wasm command's speed against native: the spec example over 60 s, run by the host's build
@@ -106,11 +113,13 @@ fi
 
 echo
 # "other format": golden logs of a scalar format the target does not compute, which it refused.
-printf '%-14s %8s %9s %12s %13s %13s  %s\n' target compared identical "other format" "build seconds" \
-  "check seconds" result
+# "build CPU seconds": user + system time of the build's processes, the figure that a loaded
+# machine does not inflate (wall seconds on two idle cores are a little over half of it).
+printf '%-14s %8s %9s %12s %13s %17s %13s  %s\n' target compared identical "other format" "build seconds" \
+  "build CPU seconds" "check seconds" result
 for row in "${table[@]}"; do
-  read -r t c i o b s v <<< "$row"
-  printf '%-14s %8s %9s %12s %13s %13s  %s\n' "$t" "$c" "$i" "$o" "$b" "$s" "${v//-/ }"
+  read -r t c i o b p s v <<< "$row"
+  printf '%-14s %8s %9s %12s %13s %17s %13s  %s\n' "$t" "$c" "$i" "$o" "$b" "$p" "$s" "${v//-/ }"
 done
 passed=0
 for row in "${table[@]}"; do [[ "$row" == *" identical" ]] && passed=$((passed + 1)); done
