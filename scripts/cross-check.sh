@@ -34,8 +34,10 @@ failed=0
 table=()
 # The CPU seconds (user + system) of every command this script has waited for so far: a target's
 # build measured in them does not depend on what else the machine is doing, as wall seconds do.
+# (From the kernel's account of this shell, $$: `times` would count a command substitution's own.)
+ticksPerSecond=$(getconf CLK_TCK)
 childCpuSeconds() {
-  times | awk 'NR == 2 { split($1, u, /[ms]/); split($2, s, /[ms]/); printf "%.0f", u[1] * 60 + u[2] + s[1] * 60 + s[2] }'
+  awk -v hz="$ticksPerSecond" '{ printf "%.0f", ($16 + $17) / hz }' "/proc/$$/stat"
 }
 problem() {  # TARGET TEXT...
   echo "cross-check: $1: ${*:2}" >&2
