@@ -1,19 +1,25 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages that gizmo builds and tests with, when any is missing; or, given
-# package names, those instead (tests/slurm/run.sh: slurm-wlm munge).
+# Installs the Debian 12 packages that gizmo builds and tests with, when any is missing; with
+# --command, only those that building the `gizmo` command needs (what `scripts/dev run` asks for,
+# so that a first run on a fresh machine does not wait for the test libraries and gnuplot); or,
+# given package names, those instead (tests/slurm/run.sh: slurm-wlm munge).
 # Non-interactive and idempotent: when everything is present it only checks and returns.
-#   scripts/setup.sh [PACKAGE...]
+#   scripts/setup.sh [--command | PACKAGE...]
 set -euo pipefail
 
-packages=(
+command_packages=(
   cmake ninja-build g++ pkgconf
-  libgtest-dev libgmock-dev libbenchmark-dev
   libboost-dev libgmp-dev libmpfr-dev libmpfi-dev
-  libpugixml-dev libcli11-dev nlohmann-json3-dev libfmt-dev
-  librapidcheck-dev libbox2d-dev
-  gnuplot-nox
+  libpugixml-dev libcli11-dev nlohmann-json3-dev libbox2d-dev
 )
-[ $# -gt 0 ] && packages=("$@")
+# The tests, the benchmarks and the study's charts (gizmo study runs gnuplot).
+test_packages=(libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev gnuplot-nox)
+packages=("${command_packages[@]}" "${test_packages[@]}")
+if [ "${1:-}" = --command ]; then
+  packages=("${command_packages[@]}")
+elif [ $# -gt 0 ]; then
+  packages=("$@")
+fi
 
 missing=()
 for p in "${packages[@]}"; do
