@@ -1,0 +1,231 @@
+// The simulator inside `gizmo play`'s page (docs/play.md): the same core, board reader and log
+// writer as the native command, compiled by the wasm32 cross build, behind a few C functions that
+// the page's script calls. One game at a time.
+//
+// Board time moves in whole ticks of the run's grid (tick k ends at k·maxTick, counted from 0, as
+// `gizmo record` and `gizmo replay` tick): a frame asks for a board time and the board runs every
+// whole tick up to it, so the game's decisions are the ones a run of the same board and inputs to
+// the same end makes, and the log (board, model, max tick, inputs, end) replays them exactly.
+#include <emscripten/emscripten.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/core/run/run.hpp"
+#include "gizmo/io/board_file.hpp"
+#include "gizmo/io/diagnostics.hpp"
+#include "gizmo/replay/replay.hpp"
+
+namespace {
+
+using gizmo::GameBoard;
+
+struct Game {
+  gizmo::RunRequest request;  // keys: every input given so far; duration: set when a log is written
+  std::vector<std::string> warnings;  // the board reader's, for the log's header
+  std::unique_ptr<GameBoard<double>> board;
+  std::int64_t ticksDone = 0;
+  std::string stopped;  // why the board stopped (a stall), empty while it runs
+};
+
+std::unique_ptr<Game> game;
+std::string text;             // the last message or name list handed to the page
+std::vector<double> numbers;  // the last array handed to the page
+
+const char* say(std::string message) {
+  text = std::move(message);
+  return text.c_str();
+}
+
+// The last k whose tick end k·maxTick is at or before t (k ≥ ticks already done).
+std::int64_t ticksBy(double t, double maxTick, std::int64_t done) {
+  std::int64_t k = std::max<std::int64_t>(done, static_cast<std::int64_t>(std::floor(t / maxTick)));
+  while (double(k + 1) * maxTick <= t) ++k;
+  while (k > done && double(k) * maxTick > t) --k;
+  return k;
+}
+
+void build() {
+  game->board = gizmo::prepareRun<double>(gizmo::RunRequest{game->request.board, game->request.model,
+                                                           game->request.maxTick, 0.0, {}});
+  game->ticksDone = 0;
+  game->stopped.clear();
+  game->request.keys.clear();
+}
+
+// The run so far as a request: its end is the board's present, its inputs those given by then.
+gizmo::RunRequest runSoFar() {
+  gizmo::RunRequest r = game->request;
+  r.duration = game->board->now();
+  r.keys.clear();
+  for (const gizmo::TimedKey& k : game->request.keys)
+    if (k.time <= r.duration) r.keys.push_back(k);
+  return r;
+}
+
+}  // namespace
+
+extern "C" {
+
+// Reads the board (its text form) and builds it at time 0. warnings: what the native reader read
+// leniently in the board's file, one a line, kept in every log. model: 0 classic, 1 ballistic.
+// Returns 1, or 0 with the reader's located error in gp_text().
+EMSCRIPTEN_KEEPALIVE int gp_load(const char* boardText, const char* name, const char* warnings, int model,
+                                 double maxTick) {
+  try {
+    if (!(maxTick > 0)) throw std::invalid_argument("the maximum tick must be positive");
+    const gizmo::io::ReadResult r = gizmo::io::readBoardString(boardText, name);
+    game = std::make_unique<Game>();
+    game->request.board = r.board;
+    game->request.model = model == 0 ? gizmo::MotionModel::Classic : gizmo::MotionModel::Ballistic;
+    game->request.maxTick = maxTick;
+    for (const gizmo::io::Diagnostic& d : r.warnings) game->warnings.push_back(gizmo::io::format(d));
+    for (std::string_view rest = warnings; !rest.empty();) {
+      const std::size_t end = std::min(rest.find('\n'), rest.size());
+      if (end > 0) game->warnings.emplace_back(rest.substr(0, end));
+      rest.remove_prefix(std::min(end + 1, rest.size()));
+    }
+    build();
+    say("");
+    return 1;
+  } catch (const std::exception& e) {
+    game.reset();
+    say(e.what());
+    return 0;
+  }
+}
+
+// The board as built again at time 0, every input forgotten.
+EMSCRIPTEN_KEEPALIVE void gp_restart() {
+  if (game) build();
+}
+
+// A key pressed (up = 0) or released (up = 1) at board time `time`, which must be later than the
+// board's present (the ticks up to it are not yet run): 1 taken, 0 not (the page tries again at
+// the next frame's time).
+EMSCRIPTEN_KEEPALIVE int gp_key(int key, int up, double time) {
+  if (!game || !game->stopped.empty() || !(time > game->board->now())) return 0;
+  const gizmo::KeyDirection d = up ? gizmo::KeyDirection::Up : gizmo::KeyDirection::Down;
+  game->board->scheduleInput(time, key, d);
+  game->request.keys.push_back(gizmo::TimedKey{time, key, d});
+  return 1;
+}
+
+// Runs every whole tick that ends at or before `target`; returns the board's time.
+EMSCRIPTEN_KEEPALIVE double gp_advance(double target) {
+  if (!game) return 0;
+  if (game->stopped.empty()) {
+    const std::int64_t k = ticksBy(target, game->request.maxTick, game->ticksDone);
+    if (k > game->ticksDone) {
+      try {
+        game->board->tickSpan(0.0, game->ticksDone + 1, double(k) * game->request.maxTick);
+      } catch (const std::exception& e) {
+        game->stopped = e.what();
+      }
+      game->ticksDone = k;
+    }
+  }
+  return game->board->now();
+}
+
+EMSCRIPTEN_KEEPALIVE double gp_now() { return game ? game->board->now() : 0.0; }
+EMSCRIPTEN_KEEPALIVE double gp_events() { return game ? double(game->board->executedTotal()) : 0.0; }
+EMSCRIPTEN_KEEPALIVE const char* gp_stopped() { return say(game ? game->stopped : ""); }
+EMSCRIPTEN_KEEPALIVE const char* gp_text() { return text.c_str(); }
+
+// The balls' names, one a line, in the order of gp_balls().
+EMSCRIPTEN_KEEPALIVE const char* gp_ball_names() {
+  std::string names;
+  if (game)
+    for (gizmo::GizmoId id : game->board->ballIds()) names += game->board->gizmo(id).name() + "\n";
+  return say(names);
+}
+
+// x, y, vx, vy of each ball at the board's present: the doubles the simulator holds.
+EMSCRIPTEN_KEEPALIVE const double* gp_balls() {
+  numbers.clear();
+  if (game) {
+    const double now = game->board->now();
+    for (gizmo::GizmoId id : game->board->ballIds()) {
+      const gizmo::Ball<double>& b = *game->board->gizmo(id).asBall();
+      const gizmo::Vec2<double> p = b.positionAt(now), v = b.velocityAt(now);
+      numbers.insert(numbers.end(), {p.x, p.y, v.x, v.y});
+    }
+  }
+  return numbers.data();
+}
+
+// Each gizmo's swing progress at the present, by gizmo id (0 for all but flippers): the page draws
+// a flipper at its angle from it, as the replay player does from a log.
+EMSCRIPTEN_KEEPALIVE const double* gp_swings() {
+  numbers.clear();
+  if (game) {
+    const double now = game->board->now();
+    for (std::size_t g = 0; g < game->board->gizmoCount(); ++g) {
+      const auto& gizmo = game->board->gizmo(gizmo::GizmoId(g));
+      const bool flipper = gizmo.kind() == gizmo::GizmoKind::LeftFlipper || gizmo.kind() == gizmo::GizmoKind::RightFlipper;
+      numbers.push_back(flipper ? static_cast<const gizmo::Flipper<double>&>(gizmo).progressAt(now) : 0.0);
+    }
+  }
+  return numbers.data();
+}
+
+// Writes the game so far (from time 0 to the present) as a replay log at `path` of the page's
+// in-memory file system, with the log writer of `gizmo record`: its size in bytes, or −1 with the
+// reason in gp_text().
+EMSCRIPTEN_KEEPALIVE double gp_save(const char* path) {
+  if (!game) return -1;
+  try {
+    gizmo::replay::LogWriter writer(path);
+    const gizmo::replay::RecordResult r =
+        gizmo::replay::recordRun(runSoFar(), gizmo::PrecisionChoice{gizmo::Precision::Double, 0}, writer, game->warnings);
+    say(r.completed ? "" : r.error);
+    return double(writer.bytesWritten());
+  } catch (const std::exception& e) {
+    say(e.what());
+    return -1;
+  }
+}
+
+// The page's own check of the log at `path`, as `gizmo replay` makes it: the log's board and
+// inputs run again and every decision compared; then, when the log ends at the board's present,
+// every ball the log has there compared with the game's, bit for bit. 1 identical, 0 not, −1 the
+// log does not read; gp_text() says what was found.
+EMSCRIPTEN_KEEPALIVE int gp_check(const char* path) {
+  try {
+    const gizmo::replay::OpenedLog log = gizmo::replay::openLog(std::string(path));
+    const gizmo::replay::ReplayReport r = gizmo::replay::replayLog(log);
+    if (!r.identical) {
+      say("differs after " + std::to_string(r.decisions) + " decisions: " + r.where);
+      return 0;
+    }
+    std::string summary = "identical: " + std::to_string(r.events) + " events replay exactly as recorded";
+    if (game && log.request.duration == game->board->now()) {
+      gizmo::replay::SeekTarget at;
+      at.time = log.request.duration;
+      const gizmo::replay::StateView s = gizmo::replay::seekLog(log, at);
+      const double* live = gp_balls();
+      for (std::size_t i = 0; i < s.balls.size(); ++i)
+        if (s.balls[i].x.value != live[4 * i] || s.balls[i].y.value != live[4 * i + 1] ||
+            s.balls[i].vx.value != live[4 * i + 2] || s.balls[i].vy.value != live[4 * i + 3]) {
+          say("the log replays identical, but at its end ball " + s.balls[i].name + " is not where the game has it");
+          return 0;
+        }
+      summary += "; every ball at its end is where the game has it";
+    }
+    say(summary);
+    return 1;
+  } catch (const std::exception& e) {
+    say(e.what());
+    return -1;
+  }
+}
+
+}  // extern "C"
