@@ -12,6 +12,7 @@
 #include "verify_command.hpp"
 #include "fuzz_command.hpp"
 #include "crosscheck_command.hpp"
+#include "play_command.hpp"
 #include "render_command.hpp"
 #include "study_command.hpp"
 #endif
@@ -185,6 +186,22 @@ int main(int argc, char** argv) {
   renderCmd->add_option("--tolerance", render.tolerance,
                         "Leave out ball path pieces that stay this close (L) to the one before (default 1e-3; 0 keeps all)");
   renderCmd->callback([&] { code = renderCommand(render); });
+
+  PlayOptions play;
+  CLI::App* playCmd = app.add_subcommand(
+      "play", "Write one self-contained HTML page in which to play a board with the keyboard: the simulator runs in\n"
+              "the page (WebAssembly), and the game saves as a replay log that gizmo replay checks. docs/play.md.\n"
+              "Example: gizmo play fixtures/boards/spec-example.txt -o game.html");
+  playCmd->add_option("board", play.board, "The board file (default: the built-in spec example)");
+  playCmd->add_option("-o,--output", play.output, "The page to write, .html")->required();
+  playCmd->add_option("--model", play.model, "Motion model: ballistic or classic")->capture_default_str();
+  playCmd->add_option("--max-tick", play.maxTick,
+                      "Maximum tick length, seconds: the page moves the board in whole ticks")->capture_default_str();
+  playCmd->add_option("--module", play.module,
+                      "The play module to put into the page (default: $GIZMO_PLAY_MODULE, else the one\n"
+                      "scripts/dev play-module builds)");
+  addStrictOption(*playCmd, play.strict);
+  playCmd->callback([&] { code = playCommand(play); });
 #endif
 
   try {

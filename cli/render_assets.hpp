@@ -1,8 +1,12 @@
 #pragma once
-// The player's page, style and script (cli/render/), compiled in so that `gizmo render` works
-// from any directory and after installation.
+// The pages' files (cli/render/), compiled in so that `gizmo render` and `gizmo play` work from
+// any directory and after installation.
 namespace gizmo::cli {
 extern const char* const kPlayerHtml;
 extern const char* const kPlayerCss;
 extern const char* const kPlayerJs;
+extern const char* const kPlayHtml;
+extern const char* const kPlayCss;
+extern const char* const kPlayJs;
+extern const char* const kBoardViewJs;  // the board drawing both pages share
 }  // namespace gizmo::cli

@@ -1,4 +1,4 @@
-// Whole-or-nothing files and base64 (see render_output.hpp).
+// Whole-or-nothing files, base64 and page templates (see render_output.hpp).
 #include "render_output.hpp"
 
 #include <cstdio>
@@ -43,6 +43,23 @@ std::string base64(const std::uint8_t* bytes, std::size_t size) {
     out += kDigits[(n >> 12) & 63];
     out += two ? kDigits[(n >> 6) & 63] : '=';
     out += '=';
+  }
+  return out;
+}
+
+void replaceMarker(std::string& text, const std::string& marker, const std::string& with) {
+  const std::size_t at = text.find(marker);
+  if (at == std::string::npos) throw std::logic_error("the page's template lacks " + marker);
+  text.replace(at, marker.size(), with);
+}
+
+std::string escapeHtml(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else out += c;
   }
   return out;
 }

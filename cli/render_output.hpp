@@ -1,6 +1,7 @@
 #pragma once
-// How `gizmo render` writes its files: whole or not at all (a temporary name, renamed at the
-// end), and the base64 text that carries binary arrays inside an HTML page.
+// How `gizmo render` and `gizmo play` write their files: whole or not at all (a temporary name,
+// renamed at the end), the base64 text that carries binary arrays inside an HTML page, and the
+// filling of a page's template.
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -13,6 +14,12 @@ namespace gizmo::cli {
 void writeFileWhole(const std::string& path, const std::string& content);
 
 std::string base64(const std::uint8_t* bytes, std::size_t size);
+
+// Fills a page template's `marker` (its first occurrence) with `with`; throws std::logic_error
+// when the template lacks it. The pages of `gizmo render` and `gizmo play` are made this way.
+void replaceMarker(std::string& text, const std::string& marker, const std::string& with);
+// Text as HTML shows it: <, > and & escaped.
+std::string escapeHtml(const std::string& s);
 
 // An array's bytes as the page reads them (little-endian, as typed arrays are on every machine a
 // browser runs on that this project builds for).

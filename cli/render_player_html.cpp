@@ -185,23 +185,6 @@ Json namesJson() {
   return {{"kinds", kinds}, {"rules", rules}, {"decisions", decisions}};
 }
 
-void replaceOnce(std::string& text, const std::string& marker, const std::string& with) {
-  const std::size_t at = text.find(marker);
-  if (at == std::string::npos) throw std::logic_error("the player page lacks " + marker);
-  text.replace(at, marker.size(), with);
-}
-
-std::string escapeHtml(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else out += c;
-  }
-  return out;
-}
-
 }  // namespace
 
 std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& runs, const std::optional<Parting>& parting,
@@ -227,10 +210,10 @@ std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& 
   std::string title = runs.empty() ? "gizmo run" : runs.front().label;
   if (runs.size() > 1) title += " vs " + runs[1].label;
   if (path) title += " vs " + path->label;
-  replaceOnce(page, "{{title}}", escapeHtml(title));
-  replaceOnce(page, "{{style}}", kPlayerCss);
-  replaceOnce(page, "{{data}}", json);
-  replaceOnce(page, "{{script}}", kPlayerJs);
+  replaceMarker(page, "{{title}}", escapeHtml(title));
+  replaceMarker(page, "{{style}}", kPlayerCss);
+  replaceMarker(page, "{{data}}", json);
+  replaceMarker(page, "{{script}}", std::string(kBoardViewJs) + kPlayerJs);
   return page;
 }
 

@@ -1,14 +1,21 @@
 #!/usr/bin/env bash
-# Installs Debian's chromium for the browser tests (tests/browser), when it is missing.
-# Non-interactive and idempotent: when chromium is there it only checks and returns.
+# Installs Debian's chromium for the browser tests (tests/browser), when it is missing; with the
+# argument `driver`, also Debian's chromium-driver (chromedriver, built from the same chromium
+# release), which the play page's tests drive the browser with (tests/browser/play/).
+# Non-interactive and idempotent: when everything asked for is there it only checks and returns.
 set -euo pipefail
 
+packages=()
+have_browser=false
 for browser in chromium chromium-browser; do
-  command -v "$browser" >/dev/null 2>&1 && exit 0
+  command -v "$browser" >/dev/null 2>&1 && have_browser=true
 done
+$have_browser || packages+=(chromium)
+[ "${1:-}" = driver ] && ! command -v chromedriver >/dev/null 2>&1 && packages+=(chromium-driver)
+[ ${#packages[@]} -eq 0 ] && exit 0
 
-echo "setup-browser: installing chromium" >&2
+echo "setup-browser: installing ${packages[*]}" >&2
 run_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 export DEBIAN_FRONTEND=noninteractive
 run_root apt-get update -qq
-run_root apt-get install -y -qq --no-install-recommends chromium >&2
+run_root apt-get install -y -qq --no-install-recommends "${packages[@]}" >&2

@@ -4,6 +4,7 @@
 // nothing. A page opened as FILE#event=N shows the board after N events and writes what it drew
 // into #probe, which the browser test compares with `gizmo replay --event N`. Another engine's
 // path (Box2D's, from a path file) can be laid over the run: a polyline through its step positions.
+// The board, its gizmos and balls are drawn by board_view.js, which the play page shares.
 "use strict";
 (function () {
   // ---- Reading the data -----------------------------------------------------------------------
@@ -11,8 +12,6 @@
   const data = JSON.parse(document.getElementById("run-data").textContent);
   const names = data.names;
   const board = data.board;
-  const SWING_TIME = 1 / 12;  // physics.md §2: a flipper swings a quarter turn in 1/12 s
-  const QUARTER = Math.PI / 2;
 
   function bytesOf(text) {
     const raw = atob(text);
@@ -132,32 +131,17 @@
     };
   }
 
-  function flipperAngle(run, id, g, t, done) {
+  // A flipper's swing progress at a moment, from its anchors.
+  function flipperSwing(run, id, t, done) {
     const f = run.flippers.get(id);
-    let s = 0;
-    if (f) {
-      const j = Math.max(0, countAtMost(f.event, f.count, done - 1) - 1);
-      const t0 = f.event[j] < 0 ? 0 : run.time[f.event[j]];
-      s = Math.min(SWING_TIME, Math.max(0, f.s0[j] + f.direction[j] * (t - t0)));
-    }
-    return g.rest_quarter * QUARTER + g.forward_sign * 6 * Math.PI * s;
+    if (!f) return 0;
+    const j = Math.max(0, countAtMost(f.event, f.count, done - 1) - 1);
+    const t0 = f.event[j] < 0 ? 0 : run.time[f.event[j]];
+    return f.s0[j] + f.direction[j] * (t - t0);
   }
 
   // ---- Text -----------------------------------------------------------------------------------
-  // A double as C's %a prints it (the `exact` texts of gizmo's JSON): the test compares bits.
-  function hexFloat(x) {
-    if (Number.isNaN(x)) return "nan";
-    if (!Number.isFinite(x)) return x > 0 ? "inf" : "-inf";
-    const view = new DataView(new ArrayBuffer(8));
-    view.setFloat64(0, x);
-    const hi = view.getUint32(0), lo = view.getUint32(4);
-    const sign = hi >>> 31 ? "-" : "";
-    const biased = (hi >>> 20) & 0x7ff;
-    const digits = ((hi & 0xfffff).toString(16).padStart(5, "0") + lo.toString(16).padStart(8, "0")).replace(/0+$/, "");
-    if (biased === 0 && digits === "") return sign + "0x0p+0";
-    const exponent = (biased === 0 ? 1 : biased) - 1023;
-    return sign + "0x" + (biased === 0 ? "0" : "1") + (digits ? "." + digits : "") + "p" + (exponent >= 0 ? "+" : "") + exponent;
-  }
+  const hexFloat = BoardView.hexFloat;
   function num(x) { return Number.isInteger(x) ? String(x) : x.toPrecision(17).replace(/0+$/, ""); }
   // A step size as people write it: 1/240 s rather than 0.0041666666666666666 s.
   function stepText(dt) {
@@ -171,12 +155,9 @@
   // ---- Colours --------------------------------------------------------------------------------
   const KIND_COLOUR = ["#ff5a5a", "#c77dff", "#4dd0e1", "#ffb74d", "#5a6577", "#81c784", "#6f7d94", "#3b4454"];
   const KIND_LANE = [0, 1, 1, 1, 2, 1, 2, 2];  // collisions, other notable events, routine events
-  const BALL_COLOURS = ["#f4f4f4", "#ffe066", "#7fd1ff", "#ff9ecb", "#a5ffb0", "#ffb27a"];
   const SECOND_RUN = "#ff8c42";
   const PATH_COLOUR = "#40c4ff";
   const PARTING_COLOUR = "#ff3b3b";
-  const GIZMO_FILL = { square: "#d9534f", triangle: "#3e7cd6", circle: "#3fae5a", absorber: "#8e4aa3", booster: "#e0b830",
-                       teleporter: "#2bb3c0" };
 
   // ---- The player's state ---------------------------------------------------------------------
   const ui = {
@@ -238,21 +219,9 @@
 
   // ---- Drawing the board ----------------------------------------------------------------------
   const view = { scale: 1, margin: 0.3 };
-  function fitCanvas(canvas, width, height) {
-    const ratio = window.devicePixelRatio || 1;
-    canvas.style.width = width + "px";
-    canvas.style.height = height + "px";
-    canvas.width = Math.max(1, Math.round(width * ratio));
-    canvas.height = Math.max(1, Math.round(height * ratio));
-    const ctx = canvas.getContext("2d");
-    ctx.setTransform(ratio, 0, 0, ratio, 0, 0);
-    return ctx;
-  }
+  const fitCanvas = BoardView.fitCanvas;
   function layout() {
-    const stage = document.getElementById("stage");
-    const side = Math.max(120, Math.min(stage.clientWidth, stage.clientHeight));
-    view.ctx = fitCanvas(ui.board, side, side);
-    view.scale = side / (board.size + 2 * view.margin);
+    BoardView.fitBoard(ui.board, document.getElementById("stage"), board, view);
     view.timeline = fitCanvas(ui.timeline, ui.timeline.clientWidth, ui.timeline.clientHeight);
     view.zoom = fitCanvas(ui.zoom, ui.zoom.clientWidth, ui.zoom.clientHeight);
     view.bins = null;
@@ -260,25 +229,15 @@
   }
 
   function drawBoard() {
-    const ctx = view.ctx;
-    const w = ui.board.clientWidth;
-    ctx.save();
-    ctx.clearRect(0, 0, w, w);
-    ctx.translate(view.margin * view.scale, view.margin * view.scale);
-    ctx.scale(view.scale, view.scale);
-    ctx.fillStyle = "#141a23";
-    ctx.fillRect(0, 0, board.size, board.size);
-    ctx.lineWidth = 0.06;
-    ctx.strokeStyle = "#8a93a6";
-    ctx.strokeRect(0, 0, board.size, board.size);
-    board.gizmos.forEach((g, i) => drawGizmo(ctx, g, i + 1));
+    const ctx = BoardView.beginBoard(view, board);
+    board.gizmos.forEach((g, i) => BoardView.drawGizmo(ctx, g, flipperSwing(main, i + 1, state.t, state.done)));
     state.drawn = [];
     runs.forEach((run, r) => {
       const done = r === 0 ? state.done : eventsBy(run, state.t);
       run.balls.forEach((ball, b) => {
         drawTrail(ctx, run, ball, r, b);
         const at = ballAt(run, ball, state.t, done);
-        drawBall(ctx, at, r, b);
+        BoardView.drawBall(ctx, board, at, b, r === 0 ? null : SECOND_RUN);
         if (r === 0) state.drawn.push({ name: ball.name, x: at.x, y: at.y, vx: at.vx, vy: at.vy });
       });
     });
@@ -297,7 +256,7 @@
       drawPathParting(ctx);
     }
     drawHits(ctx);
-    ctx.restore();
+    BoardView.endBoard(view);
   }
 
   // The path's last half second: the kept step positions in it, and the interpolated ends. A
@@ -334,47 +293,7 @@
     }
   }
 
-  function drawGizmo(ctx, g, id) {
-    if (g.type === "left-flipper" || g.type === "right-flipper") {
-      const theta = flipperAngle(main, id, g, state.t, state.done);
-      ctx.strokeStyle = "#f0a030";
-      ctx.lineCap = "round";
-      ctx.lineWidth = 2 * g.radius;
-      ctx.beginPath();
-      ctx.moveTo(g.pivot[0], g.pivot[1]);
-      ctx.lineTo(g.pivot[0] + g.length * Math.cos(theta), g.pivot[1] + g.length * Math.sin(theta));
-      ctx.stroke();
-      ctx.fillStyle = "#7a4c0c";
-      ctx.beginPath();
-      ctx.arc(g.pivot[0], g.pivot[1], 0.07, 0, 2 * Math.PI);
-      ctx.fill();
-      return;
-    }
-    ctx.fillStyle = GIZMO_FILL[g.type] || "#888";
-    ctx.beginPath();
-    if (g.type === "circle" || g.type === "teleporter") ctx.arc(g.centre[0], g.centre[1], g.radius, 0, 2 * Math.PI);
-    else g.polygon.forEach((p, i) => (i ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
-    ctx.closePath();
-    ctx.fill();
-  }
-
-  function ballColour(r, b) { return r === 0 ? BALL_COLOURS[b % BALL_COLOURS.length] : SECOND_RUN; }
-
-  function drawBall(ctx, at, r, b) {
-    ctx.beginPath();
-    ctx.arc(at.x, at.y, board.ball_radius, 0, 2 * Math.PI);
-    if (r === 0) {
-      ctx.fillStyle = ballColour(r, b);
-      ctx.fill();
-      ctx.lineWidth = 0.03;
-      ctx.strokeStyle = "#222";
-      ctx.stroke();
-    } else {
-      ctx.lineWidth = 0.07;
-      ctx.strokeStyle = SECOND_RUN;
-      ctx.stroke();
-    }
-  }
+  function ballColour(r, b) { return r === 0 ? BoardView.ballColour(b) : SECOND_RUN; }
 
   // The last half second of each ball's path, sampled on its true pieces.
   const TRAIL_SECONDS = 0.5, TRAIL_SAMPLES = 48;
