@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The play page's tests in headless Chromium (docs/play.md): writes the page of the spec example
+# (flippers and an absorber) and of the crowded board (100 balls) with BUILD_DIR's gizmo and the
+# play module of WASM_BUILD_DIR, plays each with real key events (play_game.mjs) and replays the
+# saved logs natively. Installs chromium and chromium-driver when missing. Usage:
+#   tests/browser/play/run.sh [BUILD_DIR [WASM_BUILD_DIR]]   (defaults: build/release, build/cross-wasm32)
+# CI runs it after `scripts/dev cross-check`, which leaves the wasm32 build in place. Pages, logs
+# and screenshots land in BUILD_DIR/play-tests/CASE/.
+set -euo pipefail
+cd "$(dirname "$0")/../../.."
+build=${1:-build/release}
+wasm=${2:-build/cross-wasm32}
+gizmo="$build/cli/gizmo"
+module="$wasm/web/gizmo-play.js"
+[ -x "$gizmo" ] || { echo "play tests: no $gizmo (build it first: scripts/dev test)" >&2; exit 2; }
+[ -f "$module" ] || { echo "play tests: no $module (build it first: scripts/dev play-module)" >&2; exit 2; }
+scripts/setup-browser.sh driver
+gizmo=$(cd "$(dirname "$gizmo")" && pwd)/gizmo
+out=$(cd "$build" && pwd)/play-tests
+
+play_case() {  # NAME BOARD SCENARIO
+  local dir="$out/$1"
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  "$gizmo" play "$2" -o "$dir/game.html" --module "$module"
+  node tests/browser/play/play_game.mjs "$3" "$gizmo" "$dir/game.html" "$dir"
+}
+play_case spec_example_keys fixtures/boards/spec-example.txt keys
+play_case crowded_30s fixtures/boards/play/crowded-100-balls.txt crowded

@@ -1,0 +1,99 @@
+// A headless Chromium driven through Debian's chromedriver (WebDriver over HTTP, with node's own
+// fetch): pages opened, scripts run, real key events (WebDriver actions, which chromedriver
+// sends as the DevTools Protocol's Input.dispatchKeyEvent, so the page sees trusted keydown and
+// keyup events), clicks, screenshots and downloads. Used by the play page's test and benchmark.
+import { spawn } from "node:child_process";
+import fs from "node:fs";
+import net from "node:net";
+
+function freePort() {
+  return new Promise((resolve, reject) => {
+    const server = net.createServer();
+    server.on("error", reject);
+    server.listen(0, "127.0.0.1", () => {
+      const { port } = server.address();
+      server.close(() => resolve(port));
+    });
+  });
+}
+
+export function sleep(ms) { return new Promise((resolve) => setTimeout(resolve, ms)); }
+
+// The WebDriver names of the keys the tests press (the W3C spec's code points for named keys).
+export const KEYS = { space: " ", delete: "\uE017", q: "q", w: "w" };
+
+export class Browser {
+  // Starts chromedriver and a headless chromium whose downloads land in downloadDir.
+  static async start({ chromium, chromedriver, profileDir, downloadDir }) {
+    const port = await freePort();
+    const driver = spawn(chromedriver, [`--port=${port}`], { stdio: ["ignore", "ignore", "pipe"] });
+    const browser = new Browser(port, driver);
+    for (let i = 0; ; i++) {
+      try {
+        const status = await (await fetch(`http://127.0.0.1:${port}/status`)).json();
+        if (status.value && status.value.ready) break;
+      } catch (e) { /* not listening yet */ }
+      if (i > 100) throw new Error("chromedriver did not start");
+      await sleep(100);
+    }
+    const session = await browser.request("POST", "/session", {
+      capabilities: { alwaysMatch: { browserName: "chrome", "goog:chromeOptions": {
+        binary: chromium,
+        args: ["--headless=new", "--no-sandbox", "--disable-gpu", "--window-size=1280,900", `--user-data-dir=${profileDir}`],
+        prefs: { "download.default_directory": downloadDir, "download.prompt_for_download": false },
+      } } },
+    });
+    browser.session = session.sessionId;
+    return browser;
+  }
+
+  constructor(port, driver) {
+    this.port = port;
+    this.driver = driver;
+    this.session = null;
+  }
+
+  async request(method, path, body) {
+    const response = await fetch(`http://127.0.0.1:${this.port}${path}`, {
+      method, headers: { "Content-Type": "application/json" }, body: body === undefined ? undefined : JSON.stringify(body),
+    });
+    const reply = await response.json();
+    if (!response.ok) throw new Error(`WebDriver ${method} ${path}: ${JSON.stringify(reply.value).slice(0, 600)}`);
+    return reply.value;
+  }
+  command(method, path, body) { return this.request(method, `/session/${this.session}${path}`, body); }
+
+  open(url) { return this.command("POST", "/url", { url }); }
+  // Runs `script` (a function body) in the page and returns its value.
+  run(script, ...args) { return this.command("POST", "/execute/sync", { script, args }); }
+  async waitFor(script, timeoutMs, what) {
+    const until = Date.now() + timeoutMs;
+    for (;;) {
+      const value = await this.run(script);
+      if (value) return value;
+      if (Date.now() > until) throw new Error(`timed out waiting for ${what}`);
+      await sleep(50);
+    }
+  }
+  // One key pressed (down) or released (up) on the keyboard.
+  key(direction, key) {
+    return this.command("POST", "/actions", {
+      actions: [{ type: "key", id: "keyboard", actions: [{ type: direction === "down" ? "keyDown" : "keyUp", value: key }] }],
+    });
+  }
+  async click(selector) {
+    const element = await this.command("POST", "/element", { using: "css selector", value: selector });
+    const id = Object.values(element)[0];
+    return this.command("POST", `/element/${id}/click`, {});
+  }
+  async screenshot(file) {
+    fs.writeFileSync(file, Buffer.from(await this.command("GET", "/screenshot"), "base64"));
+  }
+  async quit() {
+    try {
+      if (this.session) await this.command("DELETE", "");
+    } finally {
+      this.driver.kill();
+    }
+  }
+}
