@@ -152,7 +152,7 @@ inputs.forEach((d, i) => {
 });
 if (taken.some((k) => !k.trusted)) fail("an input came from a key event the browser did not mark as trusted");
 if (scenario === "keys" && inputs.length < 20) fail(`only ${inputs.length} inputs taken from the schedule's keys`);
-say(`${inputs.length} inputs, each from a trusted key event, in the log at the page's board times`);
+if (inputs.length) say(`${inputs.length} inputs, each from a trusted key event, in the log at the page's board times`);
 
 // The board the page showed at one moment, exactly where the log has it.
 if (seen) {
@@ -165,5 +165,13 @@ if (seen) {
       if (b[axis].exact !== p[axis]) fail(`ball ${b.name} at t = ${seen.time}: ${axis} is ${b[axis].exact} in the log, ${p[axis]} in the page`);
   });
   say(`at board time ${seen.time_value} s (${seen.time}) every ball is where the page had it, bit for bit`);
+}
+// The other native commands take the log as any other: the replay player, and (a short game)
+// the certification of every decision.
+gizmoRun("render", log, "-o", path.join(outDir, "replay.html"));
+if (scenario === "keys") {
+  const certified = gizmoRun("verify", log, "--certify");
+  if (!/wrong decisions: 0/.test(certified)) fail(`gizmo verify --certify: ${certified}`);
+  say(`gizmo verify --certify: ${certified.split("\n")[0]}`);
 }
 console.log(`play ${scenario}: passed (${end.events} events over ${end.time_value} s; log and screenshots in ${outDir})`);
