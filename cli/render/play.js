@@ -236,20 +236,30 @@
       balls: game.balls.map((b, i) => ({ name: game.names[i], x: hex(b.x), y: hex(b.y), vx: hex(b.vx), vy: hex(b.vy) })),
     };
   }
-  // FILE#bench: 600 frames of 1/60 s of board time each, drawn as in play; the simulation's time
-  // per frame (median, worst) goes into #probe (docs/play.md, the figures).
-  const BENCH_FRAMES = 600;
+  // FILE#bench: 600 frames of 1/60 s of board time each, drawn as in play, in five rounds from the
+  // restart (no keys: every round makes the same frames); each frame's best time over the rounds
+  // counts, so that a frame does not also hold the time a shared machine gave to other processes
+  // (the worst single frame of any round is raw_worst_ms). The simulation's time per frame, median
+  // and worst, goes into #probe (docs/play.md, the figures).
+  const BENCH_FRAMES = 600, BENCH_ROUNDS = 5;
   function benchFrame() {
     const b = game.bench;
-    b.sim.push(game.simMs);
-    if (b.sim.length < BENCH_FRAMES || b.done) return;
+    if (b.done) return;
+    b.best[b.frame] = Math.min(b.best[b.frame], game.simMs);
+    b.rawWorst = Math.max(b.rawWorst, game.simMs);
+    if (++b.frame < BENCH_FRAMES) return;
+    b.result = b.result || { board_time: game.now, events: game.events };
+    b.frame = 0;
+    if (++b.round < BENCH_ROUNDS) {
+      restart();
+      return;
+    }
     b.done = true;
-    const sorted = b.sim.slice().sort((x, y) => x - y);
-    b.result = {
-      frames: sorted.length, board_time: game.now, events: game.events,
-      median_ms: sorted[sorted.length >> 1], worst_ms: sorted[sorted.length - 1],
-      mean_ms: sorted.reduce((s, x) => s + x, 0) / sorted.length,
-    };
+    const sorted = b.best.slice().sort((x, y) => x - y);
+    Object.assign(b.result, {
+      frames: BENCH_FRAMES, rounds: BENCH_ROUNDS, median_ms: sorted[BENCH_FRAMES >> 1], worst_ms: sorted[BENCH_FRAMES - 1],
+      mean_ms: sorted.reduce((sum, x) => sum + x, 0) / BENCH_FRAMES, raw_worst_ms: b.rawWorst,
+    });
     ui.probe.textContent = JSON.stringify(b.result);
   }
 
@@ -288,7 +298,8 @@
     }
     game.names = game.api.names().split("\n").filter((s) => s);
     describe();
-    if (window.location.hash === "#bench") game.bench = { sim: [], done: false };
+    if (window.location.hash === "#bench")
+      game.bench = { best: new Array(BENCH_FRAMES).fill(Infinity), frame: 0, round: 0, rawWorst: 0, done: false, result: null };
     for (const b of [ui.pause, ui.restart, ui.save, ui.check]) b.disabled = false;
     // A clicked button keeps no focus, so that space (a board key) never presses it.
     for (const b of [ui.pause, ui.restart, ui.save, ui.check, ui.speed]) b.addEventListener("click", () => b.blur());
@@ -297,7 +308,7 @@
     ui.restart.addEventListener("click", restart);
     ui.save.addEventListener("click", save);
     ui.check.addEventListener("click", check);
-    window.gizmoPlay = { probe, save, check, restart, setPaused, ready: true, bench: () => game.bench && game.bench.result };
+    window.gizmoPlay = { probe, save, check, restart, setPaused, ready: true, bench: () => game.bench && game.bench.done && game.bench.result };
     readBoard();
     requestAnimationFrame(frame);
   });

@@ -1,0 +1,36 @@
+// Simulation time per frame of the play page in headless Chromium (docs/play.md, the figures):
+// the page opened at FILE#bench plays 600 frames of 1/60 s of board time each, drawn as in play,
+// five times from the restart, timing the module's work in each frame (keys taken, ticks run,
+// balls and flippers read); each frame's best round counts, and the page reports their median,
+// worst and mean, and the worst single frame of any round (raw). performance.now() in a page
+// opened from a file is coarsened by the browser (to 0.1 ms in Chromium, with jitter), which
+// bounds how finely one frame is measured; the mean over 600 frames is finer.
+//   node bench/play_frames.mjs PAGE...
+import path from "node:path";
+import os from "node:os";
+import fs from "node:fs";
+import { Browser } from "../tests/browser/play/webdriver.mjs";
+
+const pages = process.argv.slice(2);
+if (!pages.length) {
+  console.error("usage: node bench/play_frames.mjs PAGE...");
+  process.exit(2);
+}
+const scratch = fs.mkdtempSync(path.join(os.tmpdir(), "gizmo-play-bench-"));
+const browser = await Browser.start({
+  chromium: "/usr/bin/chromium", chromedriver: "/usr/bin/chromedriver",
+  profileDir: path.join(scratch, "profile"), downloadDir: path.join(scratch, "downloads"),
+});
+try {
+  console.log("page                          frames  board s   events  median ms  worst ms  mean ms  raw worst ms");
+  for (const page of pages) {
+    await browser.open("file://" + path.resolve(page) + "#bench");
+    const r = await browser.waitFor("return window.gizmoPlay && window.gizmoPlay.bench();", 300000, "five rounds of 600 frames");
+    console.log(`${path.basename(page).padEnd(29)} ${String(r.frames).padStart(6)} ${r.board_time.toFixed(2).padStart(8)} ` +
+                `${String(r.events).padStart(8)} ${r.median_ms.toFixed(2).padStart(10)} ${r.worst_ms.toFixed(2).padStart(9)} ` +
+                `${r.mean_ms.toFixed(3).padStart(8)} ${r.raw_worst_ms.toFixed(2).padStart(13)}`);
+  }
+} finally {
+  await browser.quit();
+  fs.rmSync(scratch, { recursive: true, force: true });
+}
