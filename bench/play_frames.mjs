@@ -18,7 +18,6 @@ if (!pages.length) {
 }
 const scratch = fs.mkdtempSync(path.join(os.tmpdir(), "gizmo-play-bench-"));
 const browser = await Browser.start({
-  chromium: "/usr/bin/chromium", chromedriver: "/usr/bin/chromedriver",
   profileDir: path.join(scratch, "profile"), downloadDir: path.join(scratch, "downloads"),
 });
 try {

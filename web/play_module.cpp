@@ -44,9 +44,12 @@ const char* say(std::string message) {
   return text.c_str();
 }
 
-// The last k whose tick end k·maxTick is at or before t (k ≥ ticks already done).
+// The last k whose tick end k·maxTick is at or before t (k ≥ ticks already done); a t that is not
+// a number, or beyond 2^53 ticks, leaves the count as it is.
 std::int64_t ticksBy(double t, double maxTick, std::int64_t done) {
-  std::int64_t k = std::max<std::int64_t>(done, static_cast<std::int64_t>(std::floor(t / maxTick)));
+  const double q = std::floor(t / maxTick);
+  if (!(q >= 0 && q < 9.0e15)) return done;
+  std::int64_t k = std::max<std::int64_t>(done, static_cast<std::int64_t>(q));
   while (double(k + 1) * maxTick <= t) ++k;
   while (k > done && double(k) * maxTick > t) --k;
   return k;

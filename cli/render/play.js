@@ -99,7 +99,8 @@
   function readBoard() {
     const m = game.module;
     const n = game.names.length;
-    const balls = m.HEAPF64.subarray(game.api.balls() >> 3, (game.api.balls() >> 3) + 4 * n);
+    const at = game.api.balls() >> 3;
+    const balls = m.HEAPF64.subarray(at, at + 4 * n);
     game.balls = [];
     for (let i = 0; i < n; i++) game.balls.push({ x: balls[4 * i], y: balls[4 * i + 1], vx: balls[4 * i + 2], vy: balls[4 * i + 3] });
     const gizmos = board.gizmos.length + 1;

@@ -98,7 +98,6 @@ async function playCrowded(browser) {
 }
 
 const browser = await Browser.start({
-  chromium: "/usr/bin/chromium", chromedriver: "/usr/bin/chromedriver",
   profileDir: path.join(outDir, "profile"), downloadDir: downloads,
 });
 let seen, end, checked, saved;

@@ -5,6 +5,7 @@
 import { spawn } from "node:child_process";
 import fs from "node:fs";
 import net from "node:net";
+import path from "node:path";
 
 function freePort() {
   return new Promise((resolve, reject) => {
@@ -17,6 +18,19 @@ function freePort() {
   });
 }
 
+// The first of `names` found on the PATH (Debian's chromium and chromium-driver put theirs there).
+export function findProgram(...names) {
+  for (const name of names)
+    for (const dir of (process.env.PATH || "").split(path.delimiter)) {
+      const candidate = path.join(dir, name);
+      try {
+        fs.accessSync(candidate, fs.constants.X_OK);
+        return candidate;
+      } catch (e) { /* not here */ }
+    }
+  throw new Error(`none of ${names.join(", ")} is installed: scripts/setup-browser.sh driver installs them`);
+}
+
 export function sleep(ms) { return new Promise((resolve) => setTimeout(resolve, ms)); }
 
 // The WebDriver names of the keys the tests press (the W3C spec's code points for named keys).
@@ -24,7 +38,8 @@ export const KEYS = { space: " ", delete: "\uE017", q: "q", w: "w" };
 
 export class Browser {
   // Starts chromedriver and a headless chromium whose downloads land in downloadDir.
-  static async start({ chromium, chromedriver, profileDir, downloadDir }) {
+  static async start({ profileDir, downloadDir }) {
+    const chromium = findProgram("chromium", "chromium-browser"), chromedriver = findProgram("chromedriver");
     const port = await freePort();
     const driver = spawn(chromedriver, [`--port=${port}`], { stdio: ["ignore", "ignore", "pipe"] });
     const browser = new Browser(port, driver);
