@@ -312,5 +312,9 @@
     window.gizmoPlay = { probe, save, check, restart, setPaused, ready: true, bench: () => game.bench && game.bench.done && game.bench.result };
     readBoard();
     requestAnimationFrame(frame);
+  }).catch((e) => {
+    // WebAssembly exceptions (the module's -fwasm-exceptions) need a browser of 2022 or later.
+    ui.clock.textContent = "";
+    ui.status.textContent = "The simulator did not start in this browser: " + e;
   });
 })();
