@@ -1,7 +1,9 @@
 // The play module's core under node against the native core, in one run (docs/play.md, the
 // figures): events per second of the same board, model, tick and board time, simulated by
 // `gizmo run BOARD --time S --json` natively (its wall_seconds: building the board and
-// simulating) and by the play module (gp_load and one gp_advance to S, timed around both).
+// simulating) and by the play module (gp_load and one gp_advance to S, timed around both),
+// without recording, as `gizmo run` simulates; then the module as the page runs it, recording
+// every decision as it goes (the last column, against native `gizmo run`).
 // Each side runs ROUNDS times (default 20) and its fastest round counts: on a shared machine a
 // round can also hold time the system gave to other processes (a slice of 10 to 20 ms, as long as
 // a whole run of the spec example), and the module's first rounds also hold V8's compilation of
@@ -27,41 +29,44 @@ const cases = [
 const MAX_TICK = 0.05;  // gizmo run's default
 
 const module = await createRequire(import.meta.url)(path.resolve(modulePath))();
-const load = module.cwrap("gp_load", "number", ["string", "string", "string", "number", "number"]);
+const load = module.cwrap("gp_load", "number", ["string", "string", "string", "number", "number", "number"]);
 const advance = module.cwrap("gp_advance", "number", ["number"]);
 const events = module.cwrap("gp_events", "number", []);
 const text = module.cwrap("gp_text", "string", []);
 
-console.log("board                        native events  native ev/s   wasm events  wasm ev/s    wasm/native");
+console.log("board                        native events  native ev/s   wasm events  wasm ev/s    wasm/native  recording/native");
 for (const c of cases) {
   const boardText = fs.readFileSync(c.board, "utf8");
-  let native = null, wasm = null;
+  let native = null, wasm = null, recording = null;
   for (let r = 0; r < rounds; r++) {
     const out = JSON.parse(execFileSync(gizmo, ["run", c.board, "--time", String(c.seconds), "--max-tick", String(MAX_TICK), "--json"],
                                         { encoding: "utf8" }));
     const n = { events: out.events.total, seconds: out.wall_seconds };
     if (!native || n.seconds < native.seconds) native = n;
 
-    const start = performance.now();
-    if (!load(boardText, path.basename(c.board), "", 1, MAX_TICK)) throw new Error(text());
-    advance(c.seconds);
-    const w = { events: events(), seconds: (performance.now() - start) / 1000 };
-    if (!wasm || w.seconds < wasm.seconds) wasm = w;
+    for (const record of [0, 1]) {
+      const start = performance.now();
+      if (!load(boardText, path.basename(c.board), "", 1, MAX_TICK, record)) throw new Error(text());
+      advance(c.seconds);
+      const w = { events: events(), seconds: (performance.now() - start) / 1000 };
+      if (record === 0 && (!wasm || w.seconds < wasm.seconds)) wasm = w;
+      if (record === 1 && (!recording || w.seconds < recording.seconds)) recording = w;
+    }
   }
   if (native.events !== wasm.events) throw new Error(`${c.name}: native ran ${native.events} events, wasm ${wasm.events}`);
   const nativeRate = native.events / native.seconds, wasmRate = wasm.events / wasm.seconds;
   console.log(`${c.name.padEnd(28)} ${String(native.events).padStart(13)} ${nativeRate.toExponential(3).padStart(12)} ` +
-              `${String(wasm.events).padStart(12)} ${wasmRate.toExponential(3).padStart(10)} ${(wasmRate / nativeRate).toFixed(3).padStart(13)}`);
+              `${String(wasm.events).padStart(12)} ${wasmRate.toExponential(3).padStart(10)} ${(wasmRate / nativeRate).toFixed(3).padStart(13)} ` +
+              `${(recording.events / recording.seconds / nativeRate).toFixed(3).padStart(17)}`);
 }
 
 // Saving a game of ten minutes of board time on the spec example (ticks of 0.01 s, the page's
-// default): the page writes its log by running the game's board and inputs again with the log
-// writer (docs/play.md, what the log holds), so this is the time "save log" takes.
+// default), as "save log" does: the header, then the chunks recorded while the game ran.
 const save = module.cwrap("gp_save", "number", ["string"]);
 const specText = fs.readFileSync(cases[0].board, "utf8");
 let best = null;
 for (let r = 0; r < 3; r++) {
-  if (!load(specText, "spec-example.txt", "", 1, 0.01)) throw new Error(text());
+  if (!load(specText, "spec-example.txt", "", 1, 0.01, 1)) throw new Error(text());
   advance(600);
   const start = performance.now();
   const bytes = save("/game.gzlog");

@@ -6,12 +6,18 @@
 // `gizmo record` and `gizmo replay` tick): a frame asks for a board time and the board runs every
 // whole tick up to it, so the game's decisions are the ones a run of the same board and inputs to
 // the same end makes, and the log (board, model, max tick, inputs, end) replays them exactly.
+// Every decision goes into the game's log as it is made (the Recorder of `gizmo record`); the
+// header, which holds the inputs and the end, is written when the log is saved.
 #include <emscripten/emscripten.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
+#include <fstream>
+#include <iterator>
 #include <memory>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -21,18 +27,45 @@
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/io/board_file.hpp"
 #include "gizmo/io/diagnostics.hpp"
+#include "gizmo/replay/recorder.hpp"
 #include "gizmo/replay/replay.hpp"
 
 namespace {
 
 using gizmo::GameBoard;
+using gizmo::replay::ChunkEntry;
+using gizmo::replay::ChunkSink;
+
+// The chunks the game's Recorder has closed, kept until the log is written.
+class KeptChunks final : public ChunkSink {
+ public:
+  void header(std::span<const std::uint8_t>) override {}
+  void chunk(std::span<const std::uint8_t> payload, const ChunkEntry& entry) override {
+    chunks_.push_back(Kept{{payload.begin(), payload.end()}, entry});
+  }
+  void finish(const gizmo::replay::RunEnd&) override {}
+  void sendTo(ChunkSink& sink) const {
+    for (const Kept& c : chunks_) sink.chunk(c.bytes, c.entry);
+  }
+
+ private:
+  struct Kept {
+    std::vector<std::uint8_t> bytes;
+    ChunkEntry entry;
+  };
+  std::vector<Kept> chunks_;
+};
 
 struct Game {
   gizmo::RunRequest request;  // keys: every input given so far; duration: set when a log is written
   std::vector<std::string> warnings;  // the board reader's, for the log's header
   std::unique_ptr<GameBoard<double>> board;
+  KeptChunks kept;
+  bool recording = true;  // off only for timing the core alone (bench/play_speed.mjs)
+  std::unique_ptr<gizmo::replay::Recorder<double>> recorder;  // after board and kept: goes first
   std::int64_t ticksDone = 0;
   std::string stopped;  // why the board stopped (a stall), empty while it runs
+  double stoppedIn = 0;  // the end of the ticks the board was running when it stopped
 };
 
 std::unique_ptr<Game> game;
@@ -56,21 +89,33 @@ std::int64_t ticksBy(double t, double maxTick, std::int64_t done) {
 }
 
 void build() {
+  game->recorder.reset();
   game->board = gizmo::prepareRun<double>(gizmo::RunRequest{game->request.board, game->request.model,
                                                            game->request.maxTick, 0.0, {}});
+  game->kept = KeptChunks();
+  if (game->recording) {
+    game->recorder = std::make_unique<gizmo::replay::Recorder<double>>(game->kept, *game->board);
+    game->board->setObserver(game->recorder.get());
+  }
   game->ticksDone = 0;
   game->stopped.clear();
   game->request.keys.clear();
 }
 
-// The run so far as a request: its end is the board's present, its inputs those given by then.
+// The run so far as a request: its end is the board's present (or, once the board stopped, the
+// end of the ticks it stopped in), its inputs those given by then.
 gizmo::RunRequest runSoFar() {
   gizmo::RunRequest r = game->request;
-  r.duration = game->board->now();
+  r.duration = game->stopped.empty() ? game->board->now() : game->stoppedIn;
   r.keys.clear();
   for (const gizmo::TimedKey& k : game->request.keys)
     if (k.time <= r.duration) r.keys.push_back(k);
   return r;
+}
+
+std::vector<char> fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 }  // namespace
@@ -79,9 +124,10 @@ extern "C" {
 
 // Reads the board (its text form) and builds it at time 0. warnings: what the native reader read
 // leniently in the board's file, one a line, kept in every log. model: 0 classic, 1 ballistic.
+// record: 1 to record every decision as the game goes (the page), 0 to time the core alone.
 // Returns 1, or 0 with the reader's located error in gp_text().
 EMSCRIPTEN_KEEPALIVE int gp_load(const char* boardText, const char* name, const char* warnings, int model,
-                                 double maxTick) {
+                                 double maxTick, int record) {
   try {
     if (!(maxTick > 0)) throw std::invalid_argument("the maximum tick must be positive");
     const gizmo::io::ReadResult r = gizmo::io::readBoardString(boardText, name);
@@ -89,6 +135,7 @@ EMSCRIPTEN_KEEPALIVE int gp_load(const char* boardText, const char* name, const 
     game->request.board = r.board;
     game->request.model = model == 0 ? gizmo::MotionModel::Classic : gizmo::MotionModel::Ballistic;
     game->request.maxTick = maxTick;
+    game->recording = record != 0;
     for (const gizmo::io::Diagnostic& d : r.warnings) game->warnings.push_back(gizmo::io::format(d));
     for (std::string_view rest = warnings; !rest.empty();) {
       const std::size_t end = std::min(rest.find('\n'), rest.size());
@@ -131,6 +178,7 @@ EMSCRIPTEN_KEEPALIVE double gp_advance(double target) {
         game->board->tickSpan(0.0, game->ticksDone + 1, double(k) * game->request.maxTick);
       } catch (const std::exception& e) {
         game->stopped = e.what();
+        game->stoppedIn = double(k) * game->request.maxTick;
       }
       game->ticksDone = k;
     }
@@ -181,15 +229,25 @@ EMSCRIPTEN_KEEPALIVE const double* gp_swings() {
 }
 
 // Writes the game so far (from time 0 to the present) as a replay log at `path` of the page's
-// in-memory file system, with the log writer of `gizmo record`: its size in bytes, or −1 with the
-// reason in gp_text().
+// in-memory file system, with the log writer of `gizmo record`: the header (the board, the inputs
+// given, the present as the end), the chunks recorded so far and the one in progress. Its size in
+// bytes, or −1 with the reason in gp_text(). A board that stopped mid-tick (a stall) left its
+// recording mid-tick, and a game loaded without recording has none: their log is recorded again
+// from the inputs (to the same stop).
 EMSCRIPTEN_KEEPALIVE double gp_save(const char* path) {
   if (!game) return -1;
+  const gizmo::PrecisionChoice precision{gizmo::Precision::Double, 0};
   try {
     gizmo::replay::LogWriter writer(path);
-    const gizmo::replay::RecordResult r =
-        gizmo::replay::recordRun(runSoFar(), gizmo::PrecisionChoice{gizmo::Precision::Double, 0}, writer, game->warnings);
-    say(r.completed ? "" : r.error);
+    if (!game->stopped.empty() || !game->recorder) {
+      const gizmo::replay::RecordResult r = gizmo::replay::recordRun(runSoFar(), precision, writer, game->warnings);
+      say(r.completed ? "" : "the log records the stop: " + r.error);
+      return double(writer.bytesWritten());
+    }
+    writer.header(gizmo::replay::recordHeader(runSoFar(), precision, game->warnings));
+    game->kept.sendTo(writer);
+    game->recorder->finishCopy(writer);
+    say("");
     return double(writer.bytesWritten());
   } catch (const std::exception& e) {
     say(e.what());
@@ -198,8 +256,9 @@ EMSCRIPTEN_KEEPALIVE double gp_save(const char* path) {
 }
 
 // The page's own check of the log at `path`, as `gizmo replay` makes it: the log's board and
-// inputs run again and every decision compared; then, when the log ends at the board's present,
-// every ball the log has there compared with the game's, bit for bit. 1 identical, 0 not, −1 the
+// inputs run again and every decision compared; the log recorded again from them, which must give
+// the same bytes; then, when the log ends at the board's present, every ball the log has there
+// compared with the game's, bit for bit. 1 identical, 0 not, −1 the
 // log does not read; gp_text() says what was found.
 EMSCRIPTEN_KEEPALIVE int gp_check(const char* path) {
   try {
@@ -210,6 +269,20 @@ EMSCRIPTEN_KEEPALIVE int gp_check(const char* path) {
       return 0;
     }
     std::string summary = "identical: " + std::to_string(r.events) + " events replay exactly as recorded";
+    // The log the game recorded as it went, against the one `gizmo record` makes of its board and
+    // inputs: the same bytes.
+    const std::string fresh = std::string(path) + ".recorded-again";
+    {
+      gizmo::replay::LogWriter writer(fresh);
+      gizmo::replay::recordRun(log.request, log.precision, writer, log.header.boardWarnings);
+    }
+    const bool sameBytes = fileBytes(path) == fileBytes(fresh);
+    std::remove(fresh.c_str());
+    if (!sameBytes) {
+      say(summary + ", but the log is not the one gizmo record writes of its board and inputs");
+      return 0;
+    }
+    summary += ", byte for byte the log gizmo record writes of them";
     if (game && log.request.duration == game->board->now()) {
       gizmo::replay::SeekTarget at;
       at.time = log.request.duration;

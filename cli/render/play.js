@@ -279,7 +279,7 @@
     game.module = m;
     game.fs = m.FS;
     game.api = {
-      load: m.cwrap("gp_load", "number", ["string", "string", "string", "number", "number"]),
+      load: m.cwrap("gp_load", "number", ["string", "string", "string", "number", "number", "number"]),
       restart: m.cwrap("gp_restart", null, []),
       key: m.cwrap("gp_key", "number", ["number", "number", "number"]),
       advance: m.cwrap("gp_advance", "number", ["number"]),
@@ -293,7 +293,7 @@
       check: m.cwrap("gp_check", "number", ["string"]),
     };
     if (!game.api.load(data.board_text, data.title, data.board_warnings.join("\n"), data.model === "classic" ? 0 : 1,
-                       data.max_tick)) {
+                       data.max_tick, 1)) {
       ui.status.textContent = "The board does not load: " + game.api.text();
       return;
     }

@@ -543,6 +543,14 @@ RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precisi
                                  [&]<class Real>() { return recordAs<Real>(request, precision, sink, boardWarnings); });
 }
 
+std::vector<std::uint8_t> recordHeader(const RunRequest& request, const PrecisionChoice& precision,
+                                       const std::vector<std::string>& boardWarnings) {
+  // The parameters as the board holds them (the board's file sets gravity and friction).
+  return withRecordablePrecision(precision, [&]<class Real>() {
+    return headerBytes(request, precision, *buildBoard<Real>(request.board, paramsFor<Real>(request)), boardWarnings);
+  });
+}
+
 OpenedLog openLog(std::unique_ptr<ByteSource> source, bool verifyChecksums) {
   LogReader reader(std::move(source), verifyChecksums);
   LogHeader header = decodeHeader(reader.headerPayload());

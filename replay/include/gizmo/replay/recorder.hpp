@@ -71,6 +71,19 @@ class Recorder final : public BoardObserver<Real> {
     sink_.finish(RunEnd{completed, board_.executedTotal(), toDouble(board_.now()), message});
   }
 
+  // For a run that goes on after its log so far is written (a game played live, `gizmo play`):
+  // sends `other` the chunk in progress and the end that finish() would send now, changing
+  // nothing here. Only at a tick boundary, where the encoder holds nothing back (tick() writes
+  // what it held before the tick's record), so the chunk's bytes are the ones close() would send.
+  void finishCopy(ChunkSink& other) const {
+    if (!next_) {
+      ChunkEntry entry = entry_;
+      entry.digest = digest_.value();
+      other.chunk(chunk_.bytes(), entry);
+    }
+    other.finish(RunEnd{true, board_.executedTotal(), toDouble(board_.now()), {}});
+  }
+
  private:
   void beginNext() { begin(std::exchange(next_, std::nullopt)); }
 

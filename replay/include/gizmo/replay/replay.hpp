@@ -27,6 +27,10 @@ struct RecordResult {
 // (io::format of each), kept in the header so that a run of a leniently read board says so.
 RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink,
                        const std::vector<std::string>& boardWarnings = {});
+// The header frame's payload recordRun writes for `request` (a log whose decisions a Recorder
+// gathered as the run went, before its inputs and duration were known: `gizmo play`).
+std::vector<std::uint8_t> recordHeader(const RunRequest& request, const PrecisionChoice& precision,
+                                       const std::vector<std::string>& boardWarnings = {});
 
 // --- plain views of decoded values -----------------------------------------------------------
 struct Exact {
