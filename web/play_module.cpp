@@ -17,7 +17,6 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
-#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -33,34 +32,12 @@
 namespace {
 
 using gizmo::GameBoard;
-using gizmo::replay::ChunkEntry;
-using gizmo::replay::ChunkSink;
-
-// The chunks the game's Recorder has closed, kept until the log is written.
-class KeptChunks final : public ChunkSink {
- public:
-  void header(std::span<const std::uint8_t>) override {}
-  void chunk(std::span<const std::uint8_t> payload, const ChunkEntry& entry) override {
-    chunks_.push_back(Kept{{payload.begin(), payload.end()}, entry});
-  }
-  void finish(const gizmo::replay::RunEnd&) override {}
-  void sendTo(ChunkSink& sink) const {
-    for (const Kept& c : chunks_) sink.chunk(c.bytes, c.entry);
-  }
-
- private:
-  struct Kept {
-    std::vector<std::uint8_t> bytes;
-    ChunkEntry entry;
-  };
-  std::vector<Kept> chunks_;
-};
 
 struct Game {
   gizmo::RunRequest request;  // keys: every input given so far; duration: set when a log is written
   std::vector<std::string> warnings;  // the board reader's, for the log's header
   std::unique_ptr<GameBoard<double>> board;
-  KeptChunks kept;
+  gizmo::replay::KeptChunks kept;  // the chunks the game's Recorder has closed
   bool recording = true;  // off only for timing the core alone (bench/play_speed.mjs)
   std::unique_ptr<gizmo::replay::Recorder<double>> recorder;  // after board and kept: goes first
   std::int64_t ticksDone = 0;
@@ -92,7 +69,7 @@ void build() {
   game->recorder.reset();
   game->board = gizmo::prepareRun<double>(gizmo::RunRequest{game->request.board, game->request.model,
                                                            game->request.maxTick, 0.0, {}});
-  game->kept = KeptChunks();
+  game->kept = gizmo::replay::KeptChunks();
   if (game->recording) {
     game->recorder = std::make_unique<gizmo::replay::Recorder<double>>(game->kept, *game->board);
     game->board->setObserver(game->recorder.get());

@@ -3,13 +3,38 @@
 // board becomes a record and enters the chunk's digest; at the first tick boundary after a chunk
 // is full, the board's state is saved as the next chunk's keyframe.
 #include <algorithm>
+#include <cstdint>
+#include <span>
 #include <utility>
+#include <vector>
 
 #include "gizmo/core/board/game_board.hpp"
 #include "gizmo/replay/chunk.hpp"
 #include "gizmo/replay/decision_digest.hpp"
 
 namespace gizmo::replay {
+
+// The chunks of a recording kept in memory, for a log written later from them, when the run's
+// inputs and end are known (a game played live, `gizmo play`): its header first (recordHeader in
+// replay.hpp), then sendTo, then the Recorder's finishCopy.
+class KeptChunks final : public ChunkSink {
+ public:
+  void header(std::span<const std::uint8_t>) override {}
+  void chunk(std::span<const std::uint8_t> payload, const ChunkEntry& entry) override {
+    chunks_.push_back(Kept{{payload.begin(), payload.end()}, entry});
+  }
+  void finish(const RunEnd&) override {}
+  void sendTo(ChunkSink& sink) const {
+    for (const Kept& c : chunks_) sink.chunk(c.bytes, c.entry);
+  }
+
+ private:
+  struct Kept {
+    std::vector<std::uint8_t> bytes;
+    ChunkEntry entry;
+  };
+  std::vector<Kept> chunks_;
+};
 
 template <class Real>
 class Recorder final : public BoardObserver<Real> {

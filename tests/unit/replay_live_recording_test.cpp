@@ -1,0 +1,104 @@
+// A log made while its run goes on, as `gizmo play`'s page makes one (docs/play.md): the Recorder
+// attached to a board whose inputs arrive as it runs, one tick at a time, and the log written at
+// a tick boundary from the chunks kept so far (KeptChunks), the chunk in progress
+// (Recorder::finishCopy) and a header made then (recordHeader). Each such log must be byte for
+// byte the one recordRun writes of the same board and inputs to that moment, whether or not a
+// chunk has just been closed there, and the run must go on undisturbed by the writing.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gizmo/core/run/run.hpp"
+#include "gizmo/replay/recorder.hpp"
+#include "gizmo/replay/replay.hpp"
+#include "support/fixture_request.hpp"
+
+namespace {
+
+using namespace gizmo;
+using namespace gizmo::replay;
+
+std::vector<char> fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Keys pressed and released through the run, at times off the tick grid and on it.
+std::vector<TimedKey> keysOver(double seconds) {
+  std::vector<TimedKey> keys;
+  for (double t = 0.213; t < seconds; t += 0.37) {
+    keys.push_back(TimedKey{t, 32, KeyDirection::Down});
+    keys.push_back(TimedKey{t + 0.15, 32, KeyDirection::Up});
+  }
+  for (double t = 0.5; t < seconds; t += 1.3) {  // on the grid of 0.01 s ticks, or next to it
+    keys.push_back(TimedKey{t, 81, KeyDirection::Down});
+    keys.push_back(TimedKey{t + 0.5, 81, KeyDirection::Up});
+  }
+  std::stable_sort(keys.begin(), keys.end(), [](const TimedKey& a, const TimedKey& b) { return a.time < b.time; });
+  return keys;
+}
+
+void liveLogsMatchRecordedOnes(MotionModel model, double seconds, int saveEvery) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("gizmo-live-recording-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  std::filesystem::create_directories(dir);
+  const std::string live = (dir / "live.gzlog").string(), again = (dir / "again.gzlog").string();
+  const PrecisionChoice precision{Precision::Double, 0};
+
+  RunRequest request = test::fixtureRequest("boards/spec-example.txt", model, 0);
+  request.maxTick = 0.01;
+  const std::vector<TimedKey> keys = keysOver(seconds);
+  std::unique_ptr<GameBoard<double>> board = prepareRun<double>(request);
+  KeptChunks kept;
+  Recorder<double> recorder(kept, *board);
+  board->setObserver(&recorder);
+
+  RunRequest soFar = request;
+  std::size_t nextKey = 0;
+  int saves = 0;
+  const auto ticks = static_cast<std::int64_t>(seconds / request.maxTick);
+  for (std::int64_t k = 1; k <= ticks; ++k) {
+    const double end = double(k) * request.maxTick;
+    for (; nextKey < keys.size() && keys[nextKey].time <= end; ++nextKey) {  // given just before their tick
+      board->scheduleInput(keys[nextKey].time, keys[nextKey].key, keys[nextKey].direction);
+      soFar.keys.push_back(keys[nextKey]);
+    }
+    board->tickSpan(0.0, k, end);
+    if (k % saveEvery != 0 && k != ticks) continue;
+    soFar.duration = board->now();
+    {
+      LogWriter writer(live);
+      writer.header(recordHeader(soFar, precision));
+      kept.sendTo(writer);
+      recorder.finishCopy(writer);
+    }
+    {
+      LogWriter writer(again);
+      ASSERT_TRUE(recordRun(soFar, precision, writer).completed);
+    }
+    ASSERT_EQ(fileBytes(live), fileBytes(again)) << "the live log at t = " << soFar.duration << " (tick " << k << ")";
+    ++saves;
+  }
+  const ReplayReport report = replayLog(openLog(live));
+  EXPECT_TRUE(report.identical) << report.where;
+  EXPECT_GT(report.events, 1000u);
+  EXPECT_GT(saves, 10);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ReplayLiveRecording, ALogWrittenMidRunIsTheLogOfTheRunToThatMoment) {
+  liveLogsMatchRecordedOnes(MotionModel::Ballistic, 40, 97);
+}
+
+TEST(ReplayLiveRecording, TheClassicModelToo) { liveLogsMatchRecordedOnes(MotionModel::Classic, 15, 61); }
+
+// Every tick for a while: some saves fall just after a chunk closed, with its keyframe pending.
+TEST(ReplayLiveRecording, ASaveAtEveryTickIncludingJustAfterAChunkCloses) { liveLogsMatchRecordedOnes(MotionModel::Ballistic, 12, 1); }
+
+}  // namespace
