@@ -27,6 +27,7 @@ class KeptChunks final : public ChunkSink {
   void sendTo(ChunkSink& sink) const {
     for (const Kept& c : chunks_) sink.chunk(c.bytes, c.entry);
   }
+  std::size_t size() const { return chunks_.size(); }
 
  private:
   struct Kept {
