@@ -12,10 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
-#include <fstream>
-#include <iterator>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -43,6 +40,7 @@ struct Game {
   std::int64_t ticksDone = 0;
   std::string stopped;  // why the board stopped (a stall), empty while it runs
   double stoppedIn = 0;  // the end of the ticks the board was running when it stopped
+  std::vector<std::uint8_t> saved;  // the last log gp_save() wrote
 };
 
 std::unique_ptr<Game> game;
@@ -88,11 +86,6 @@ gizmo::RunRequest runSoFar() {
   for (const gizmo::TimedKey& k : game->request.keys)
     if (k.time <= r.duration) r.keys.push_back(k);
   return r;
-}
-
-std::vector<char> fileBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 }  // namespace
@@ -205,41 +198,50 @@ EMSCRIPTEN_KEEPALIVE const double* gp_swings() {
   return numbers.data();
 }
 
-// Writes the game so far (from time 0 to the present) as a replay log at `path` of the page's
-// in-memory file system, with the log writer of `gizmo record`: the header (the board, the inputs
-// given, the present as the end), the chunks recorded so far and the one in progress. Its size in
-// bytes, or −1 with the reason in gp_text(). A board that stopped mid-tick (a stall) left its
-// recording mid-tick, and a game loaded without recording has none: their log is recorded again
-// from the inputs (to the same stop).
-EMSCRIPTEN_KEEPALIVE double gp_save(const char* path) {
+// Writes the game so far (from time 0 to the present) as a replay log into the module's memory,
+// with the log writer of `gizmo record`: the header (the board, the inputs given, the present as
+// the end), the chunks recorded so far and the one in progress. Returns its size in bytes (the
+// bytes at gp_saved()), or −1 with the reason in gp_text(). A board that stopped mid-tick (a
+// stall) left its recording mid-tick, and a game loaded without recording has none: their log is
+// recorded again from the inputs (to the same stop).
+EMSCRIPTEN_KEEPALIVE double gp_save() {
   if (!game) return -1;
   const gizmo::PrecisionChoice precision{gizmo::Precision::Double, 0};
+  game->saved.clear();
   try {
-    gizmo::replay::LogWriter writer(path);
+    gizmo::replay::LogWriter writer(game->saved);
     if (!game->stopped.empty() || !game->recorder) {
       const gizmo::replay::RecordResult r = gizmo::replay::recordRun(runSoFar(), precision, writer, game->warnings);
       say(r.completed ? "" : "the log records the stop: " + r.error);
-      return double(writer.bytesWritten());
+      return double(game->saved.size());
     }
     writer.header(gizmo::replay::recordHeader(runSoFar(), precision, game->warnings));
     game->kept.sendTo(writer);
     game->recorder->finishCopy(writer);
     say("");
-    return double(writer.bytesWritten());
+    return double(game->saved.size());
   } catch (const std::exception& e) {
+    game->saved.clear();
     say(e.what());
     return -1;
   }
 }
 
-// The page's own check of the log at `path`, as `gizmo replay` makes it: the log's board and
+// The bytes of the log gp_save() wrote; gp_forget_saved() gives their memory back.
+EMSCRIPTEN_KEEPALIVE const std::uint8_t* gp_saved() { return game ? game->saved.data() : nullptr; }
+EMSCRIPTEN_KEEPALIVE void gp_forget_saved() {
+  if (game) std::vector<std::uint8_t>().swap(game->saved);
+}
+
+// The page's own check of the log gp_save() wrote, as `gizmo replay` makes it: the log's board and
 // inputs run again and every decision compared; the log recorded again from them, which must give
 // the same bytes; then, when the log ends at the board's present, every ball the log has there
-// compared with the game's, bit for bit. 1 identical, 0 not, −1 the
-// log does not read; gp_text() says what was found.
-EMSCRIPTEN_KEEPALIVE int gp_check(const char* path) {
+// compared with the game's, bit for bit. 1 identical, 0 not, −1 the log does not read;
+// gp_text() says what was found.
+EMSCRIPTEN_KEEPALIVE int gp_check() {
+  if (!game) return -1;
   try {
-    const gizmo::replay::OpenedLog log = gizmo::replay::openLog(std::string(path));
+    const gizmo::replay::OpenedLog log = gizmo::replay::openLog(gizmo::replay::ByteSource::memory(game->saved));
     const gizmo::replay::ReplayReport r = gizmo::replay::replayLog(log);
     if (!r.identical) {
       say("differs after " + std::to_string(r.decisions) + " decisions: " + r.where);
@@ -248,19 +250,17 @@ EMSCRIPTEN_KEEPALIVE int gp_check(const char* path) {
     std::string summary = "identical: " + std::to_string(r.events) + " events replay exactly as recorded";
     // The log the game recorded as it went, against the one `gizmo record` makes of its board and
     // inputs: the same bytes.
-    const std::string fresh = std::string(path) + ".recorded-again";
+    std::vector<std::uint8_t> again;
     {
-      gizmo::replay::LogWriter writer(fresh);
+      gizmo::replay::LogWriter writer(again);
       gizmo::replay::recordRun(log.request, log.precision, writer, log.header.boardWarnings);
     }
-    const bool sameBytes = fileBytes(path) == fileBytes(fresh);
-    std::remove(fresh.c_str());
-    if (!sameBytes) {
+    if (again != game->saved) {
       say(summary + ", but the log is not the one gizmo record writes of its board and inputs");
       return 0;
     }
     summary += ", byte for byte the log gizmo record writes of them";
-    if (game && log.request.duration == game->board->now()) {
+    if (log.request.duration == game->board->now()) {
       gizmo::replay::SeekTarget at;
       at.time = log.request.duration;
       const gizmo::replay::StateView s = gizmo::replay::seekLog(log, at);

@@ -21,7 +21,7 @@
   };
   const view = { scale: 1, margin: 0.3 };
   const game = {
-    api: null, fs: null, heap: null,
+    api: null, module: null,
     target: 0, now: 0, events: 0, paused: false, stopped: "",
     pending: [],      // keys seen, not yet given to the board: {code, up, trusted}
     inputs: [],       // keys given: {code, up, time}
@@ -182,22 +182,23 @@
     return stem + "-" + d.getFullYear() + two(d.getMonth() + 1) + two(d.getDate()) + "-" +
       two(d.getHours()) + two(d.getMinutes()) + two(d.getSeconds()) + ".gzlog";
   }
-  // Writes the game so far as a log (in the module's memory): its bytes, or null.
-  function writeLog(path) {
+  // Writes the game so far as a log (in the module's memory) and copies it out: its bytes, or null.
+  function writeLog() {
     const start = performance.now();
-    const size = game.api.save(path);
-    const ms = performance.now() - start;
+    const size = game.api.save();
     if (size < 0) {
       ui.logStatus.textContent = "The log could not be written: " + game.api.text();
       ui.logStatus.className = "bad";
       return null;
     }
-    const bytes = game.fs.readFile(path);
-    game.fs.unlink(path);
+    const at = game.api.saved();
+    const bytes = game.module.HEAPU8.slice(at, at + size);
+    const ms = performance.now() - start;
     return { bytes, ms, note: game.api.text() };
   }
   function save() {
-    const log = writeLog("/game.gzlog");
+    const log = writeLog();
+    game.api.forgetSaved();
     if (!log) return null;
     const name = logName();
     const link = document.createElement("a");
@@ -213,14 +214,13 @@
     return { name, size: log.bytes.length, time: game.now, ms: log.ms };
   }
   function check() {
-    const path = "/check.gzlog";
-    const size = game.api.save(path);
+    const size = game.api.save();
     let result = -1, text = game.api.text();
     if (size >= 0) {
-      result = game.api.check(path);
+      result = game.api.check();
       text = game.api.text();
-      game.fs.unlink(path);
     }
+    game.api.forgetSaved();
     ui.logStatus.textContent = "Check at t = " + game.now.toFixed(2) + " s: " + text;
     ui.logStatus.className = result === 1 ? "good" : "bad";
     return { identical: result === 1, text };
@@ -277,7 +277,6 @@
   window.addEventListener("resize", layout);
   GizmoPlayModule().then((m) => {
     game.module = m;
-    game.fs = m.FS;
     game.api = {
       load: m.cwrap("gp_load", "number", ["string", "string", "string", "number", "number", "number"]),
       restart: m.cwrap("gp_restart", null, []),
@@ -289,8 +288,10 @@
       names: m.cwrap("gp_ball_names", "string", []),
       balls: m.cwrap("gp_balls", "number", []),
       swings: m.cwrap("gp_swings", "number", []),
-      save: m.cwrap("gp_save", "number", ["string"]),
-      check: m.cwrap("gp_check", "number", ["string"]),
+      save: m.cwrap("gp_save", "number", []),
+      saved: m.cwrap("gp_saved", "number", []),
+      forgetSaved: m.cwrap("gp_forget_saved", null, []),
+      check: m.cwrap("gp_check", "number", []),
     };
     if (!game.api.load(data.board_text, data.title, data.board_warnings.join("\n"), data.model === "classic" ? 0 : 1,
                        data.max_tick, 1)) {

@@ -119,13 +119,28 @@ std::size_t readPreamble(std::span<const std::uint8_t> payload, ChunkPreamble& p
 LogWriter::LogWriter(const std::string& path) : path_(path) {
   file_ = std::fopen(path.c_str(), "wb");
   if (!file_) throw std::runtime_error(path + ": cannot create: " + std::strerror(errno));
+  start();
+}
+
+LogWriter::LogWriter(std::vector<std::uint8_t>& memory) : path_("the log in memory"), memory_(&memory) { start(); }
+
+// The file header.
+void LogWriter::start() {
+  open_ = true;
   ByteWriter w;
   w.bytes(kMagic.data(), kMagic.size());
   w.u16(kFormatVersion);
   w.u16(0);
-  if (std::fwrite(w.bytes().data(), 1, w.size(), file_) != w.size())
-    throw std::runtime_error(path_ + ": write failed: " + std::strerror(errno));
+  if (!put(w.bytes())) throw std::runtime_error(path_ + ": write failed: " + std::strerror(errno));
   offset_ = w.size();
+}
+
+bool LogWriter::put(std::span<const std::uint8_t> bytes) {
+  if (memory_) {
+    memory_->insert(memory_->end(), bytes.begin(), bytes.end());
+    return true;
+  }
+  return std::fwrite(bytes.data(), 1, bytes.size(), file_) == bytes.size();
 }
 
 LogWriter::~LogWriter() {
@@ -133,7 +148,7 @@ LogWriter::~LogWriter() {
 }
 
 void LogWriter::frame(std::uint8_t type, std::span<const std::uint8_t> payload) {
-  if (!file_) throw std::logic_error("log already finished");
+  if (!open_) throw std::logic_error("log already finished");
   const auto length = static_cast<std::uint32_t>(payload.size());
   if (payload.size() > kMaxFramePayload) throw std::runtime_error(path_ + ": a chunk too large for the log format");
   ByteWriter head;
@@ -141,9 +156,7 @@ void LogWriter::frame(std::uint8_t type, std::span<const std::uint8_t> payload) 
   head.u32(length);
   ByteWriter tail;
   tail.u64(frameChecksum(type, length, payload));
-  const bool ok = std::fwrite(head.bytes().data(), 1, head.size(), file_) == head.size() &&
-                  std::fwrite(payload.data(), 1, payload.size(), file_) == payload.size() &&
-                  std::fwrite(tail.bytes().data(), 1, tail.size(), file_) == tail.size() && std::fflush(file_) == 0;
+  const bool ok = put(head.bytes()) && put(payload) && put(tail.bytes()) && (memory_ || std::fflush(file_) == 0);
   if (!ok) throw std::runtime_error(path_ + ": write failed: " + std::strerror(errno));
   offset_ += head.size() + payload.size() + tail.size();
 }
@@ -179,8 +192,9 @@ void LogWriter::finish(const RunEnd& end) {
   ByteWriter t;
   t.u64(indexOffset);
   t.bytes(kTrailerMagic.data(), kTrailerMagic.size());
-  const bool ok = std::fwrite(t.bytes().data(), 1, t.size(), file_) == t.size() && std::fclose(file_) == 0;
+  const bool ok = put(t.bytes()) && (memory_ || std::fclose(file_) == 0);
   file_ = nullptr;
+  open_ = false;
   offset_ += t.size();
   if (!ok) throw std::runtime_error(path_ + ": write failed: " + std::strerror(errno));
 }

@@ -4,7 +4,9 @@
 // (Recorder::finishCopy) and a header made then (recordHeader). Each such log must be byte for
 // byte the one recordRun writes of the same board and inputs to that moment, whether or not a
 // chunk has just been closed there (saves every so many ticks, and at each of the three ticks
-// after a chunk closes), and the run must go on undisturbed by the writing.
+// after a chunk closes), and the run must go on undisturbed by the writing. The live log is
+// written into memory (as the page writes it), the other into a file: the two targets of
+// LogWriter give the same bytes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,9 +27,9 @@ namespace {
 using namespace gizmo;
 using namespace gizmo::replay;
 
-std::vector<char> fileBytes(const std::string& path) {
+std::vector<std::uint8_t> fileBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return std::vector<std::uint8_t>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 // Keys pressed and released through the run, at times off the tick grid and on it.
@@ -49,7 +51,8 @@ void liveLogsMatchRecordedOnes(MotionModel model, double seconds, int saveEvery)
   const std::filesystem::path dir = std::filesystem::temp_directory_path() /
                                     ("gizmo-live-recording-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
   std::filesystem::create_directories(dir);
-  const std::string live = (dir / "live.gzlog").string(), again = (dir / "again.gzlog").string();
+  const std::string again = (dir / "again.gzlog").string();
+  std::vector<std::uint8_t> live;
   const PrecisionChoice precision{Precision::Double, 0};
 
   RunRequest request = test::fixtureRequest("boards/spec-example.txt", model, 0);
@@ -77,6 +80,7 @@ void liveLogsMatchRecordedOnes(MotionModel model, double seconds, int saveEvery)
     const bool afterAClose = k - closedAt < 3;
     if (k % saveEvery != 0 && k != ticks && !afterAClose) continue;
     soFar.duration = board->now();
+    live.clear();
     {
       LogWriter writer(live);
       writer.header(recordHeader(soFar, precision));
@@ -87,11 +91,11 @@ void liveLogsMatchRecordedOnes(MotionModel model, double seconds, int saveEvery)
       LogWriter writer(again);
       ASSERT_TRUE(recordRun(soFar, precision, writer).completed);
     }
-    ASSERT_EQ(fileBytes(live), fileBytes(again)) << "the live log at t = " << soFar.duration << " (tick " << k << ")";
+    ASSERT_EQ(live, fileBytes(again)) << "the live log at t = " << soFar.duration << " (tick " << k << ")";
     ++saves;
     if (afterAClose) ++savesAfterAClose;
   }
-  const ReplayReport report = replayLog(openLog(live));
+  const ReplayReport report = replayLog(openLog(ByteSource::memory(live)));
   EXPECT_TRUE(report.identical) << report.where;
   EXPECT_GT(report.events, 1000u);
   EXPECT_GT(saves, 10);

@@ -58,10 +58,12 @@ inline ChunkEntry entryOf(const ChunkPreamble& p, std::uint64_t offset) {
 }
 
 // Writes frames to a file as they come; each chunk reaches the operating system before the next
-// is made, so a crash leaves a log that is readable up to its last complete chunk.
+// is made, so a crash leaves a log that is readable up to its last complete chunk. Or appends
+// them to bytes in memory (a web page that hands the log to its user, `gizmo play`).
 class LogWriter final : public ChunkSink {
  public:
   explicit LogWriter(const std::string& path);  // throws std::runtime_error naming the path
+  explicit LogWriter(std::vector<std::uint8_t>& memory);
   ~LogWriter() override;
   void header(std::span<const std::uint8_t> payload) override;
   void chunk(std::span<const std::uint8_t> payload, const ChunkEntry& entry) override;
@@ -71,8 +73,12 @@ class LogWriter final : public ChunkSink {
 
  private:
   void frame(std::uint8_t type, std::span<const std::uint8_t> payload);
+  void start();
+  bool put(std::span<const std::uint8_t> bytes);  // to the file or the memory; false if it failed
   std::string path_;
   std::FILE* file_ = nullptr;
+  std::vector<std::uint8_t>* memory_ = nullptr;
+  bool open_ = false;
   std::uint64_t offset_ = 0;
   std::vector<ChunkEntry> index_;
 };
