@@ -84,17 +84,17 @@
   // ---- The simulator ----------------------------------------------------------------------------
   // Hands the keys seen to the board at the frame's board time, then runs the ticks up to it.
   function step() {
+    const start = performance.now();
     while (game.pending.length && !game.stopped) {
       const k = game.pending[0];
       if (!game.api.key(k.code, k.up ? 1 : 0, game.target)) break;  // not after the present yet
       game.inputs.push({ code: k.code, up: k.up, time: game.target, trusted: k.trusted });
       game.pending.shift();
     }
-    const start = performance.now();
     game.now = game.api.advance(game.target);
-    game.simMs = performance.now() - start;
     game.events = game.api.events();
     readBoard();
+    game.simMs = performance.now() - start;
   }
   function readBoard() {
     const m = game.module;
