@@ -1,5 +1,5 @@
 #pragma once
-// The boards the benchmarks run: the specification's example and a crowded generated board.
+// The boards the benchmarks run: the specification's example and the crowded board, both fixtures.
 #include <optional>
 #include <string>
 
