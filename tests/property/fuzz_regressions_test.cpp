@@ -131,5 +131,25 @@ TEST(FuzzRegressions, ABallRunningAlongAFlippersTurningSideIsHit) {
   EXPECT_TRUE(result.violations.empty()) << firstViolation(result);
 }
 
+// Seed 299792458, case 11204, shrunk: B38 shuttles along a row at 1601 L/s, striking B104 (at
+// rest on a left flipper's pivot circle) and taking its speed back again, a Newton's cradle whose
+// roundings leave B104 1.9e-13 L behind the end of the flipper's side. The key turns that side
+// towards it: the side's gap is never positive there, only zero when the end comes under the
+// ball, so no entry was found and B104 was 3e-4 L inside the flipper 1.8 ms later.
+TEST(FuzzRegressions, ABallOnAFlippersPivotIsHitWhenTheTurningSidesEndComesUnderIt) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B38", 11.5, 16.75, -1601.831315770533, 0));
+  board.balls.push_back(ballAt("B104", 18.75, 16.75));
+  board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G3", 17, 16, 90));
+  board.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Up, "G3", {}});
+  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
+    RunRequest run = ballisticRun(board, 0.05, 0.3);
+    run.model = model;
+    run.keys.push_back(TimedKey{0.176122196769977, 32, KeyDirection::Up});
+    const InvariantRun result = checkInvariants<double>(run, {std::begin(kAllInvariants), std::end(kAllInvariants)});
+    EXPECT_TRUE(result.violations.empty()) << firstViolation(result);
+  }
+}
+
 }  // namespace
 }  // namespace gizmo::verify::fuzz

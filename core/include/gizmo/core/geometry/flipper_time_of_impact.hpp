@@ -30,6 +30,20 @@ struct SwingingAxis {
   }
 };
 
+// The axis as it stands τ from now (direction(0) of the result is direction(τ) of this one).
+template <class Real>
+SwingingAxis<Real> axisAfter(SwingingAxis<Real> axis, const Real& tau) {
+  axis.phi0 = Real(axis.phi0 + axis.omega * tau);
+  return axis;
+}
+
+// The axis a quarter turn on: the normal of its side 0 is this axis's direction.
+template <class Real>
+SwingingAxis<Real> quarterTurned(SwingingAxis<Real> axis) {
+  ++axis.baseQuarter;
+  return axis;
+}
+
 // Bounds over τ ∈ [a, b] of the ball's offset from the pivot q(τ) and its derivatives.
 template <class Real>
 struct OffsetBounds {
@@ -159,7 +173,14 @@ std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, cons
     // (the generator's first draw with boosters, classic, gravity 1000: docs/fuzzing.md).
     const Real sigma = feature == 0 ? Real(1) : Real(-1);
     touch.bend = sigma * Real(2) * axis.omega * dot(ball.v, u) - axis.omega * axis.omega * across;
-    touch.alongAxis = Real(0) <= along && along <= axis.length && Real(0) <= across;
+    // At the pivot end, closer than the ball's position resolution counts as along the side: the
+    // pivot's circle does not move, so a ball resting on it a rounding behind the side's end is
+    // touched by nothing that closes, yet the side turning into it sweeps over it within 10⁻¹⁴ s
+    // (a ball put back there by a Newton's cradle of balls, 3.6·10⁻¹⁴ L behind the end: found by
+    // the fuzzer, seed 299792458 case 11204, docs/fuzzing.md). The tip end needs no such rule:
+    // the tip's circle moves with the side, and its own gap closes.
+    const Real behindPivot = positionResolution(ball.p);
+    touch.alongAxis = -behindPivot <= along && along <= axis.length && Real(0) <= across;
   } else if (feature == 3) {
     const Vec2<Real> e = ball.p - (axis.pivot + axis.length * u);
     const Real distance = length(e);
@@ -229,6 +250,35 @@ std::optional<SwingContact<Real>> swingingCapsuleTimeOfImpact(const Trajectory<R
     consider(math::firstEntrySmooth(gap, Real(0), searchEnd, notAGraze), 3);
   }
   return best;
+}
+
+// A ball on the pivot's circle behind a side's end (−q·u > 0), as the flipper turns that side
+// towards it. The side's gap is never positive there: its line passes within reach of the ball
+// until the end comes under it, when the gap touches zero from below and then closes. No entry
+// from a positive gap exists to be found, and the ball would pass into the flipper (a ball at
+// rest on the pivot's circle 1.9·10⁻¹³ L behind the end, put there by a Newton's cradle of balls:
+// the fuzzer, seed 299792458 case 11204, docs/fuzzing.md). So the instant the end comes under
+// the ball is searched for instead: its distance behind the end's line, −q·u, is the side gap
+// of the quarter-turned axis with σ = −1 and no reach, and falls to zero there. `touching`
+// (trajectory and axis at that instant) names the side it then touches and is pressed by.
+template <class Real, class Touching>
+std::optional<SwingContact<Real>> sideEndComesUnder(const Trajectory<Real>& ball, const Real& r,
+                                                    const SwingingAxis<Real>& axis, const Real& limit,
+                                                    Touching&& touching) {
+  // Only a ball that can be on the pivot's circle in the time: its distance from the pivot
+  // within its travel (and a rounding) of the reach.
+  const Real half = Real(1) / Real(2);
+  const Real travel =
+      length(ball.v) * limit + half * length(ball.a) * limit * limit + positionResolution(ball.p);
+  if (travel < absOf(Real(length(Vec2<Real>(ball.p - axis.pivot)) - (r + axis.radius)))) return std::nullopt;
+  const SideGap<Real> behindEnd{ball, quarterTurned(axis), Real(0), Real(-1)};
+  std::optional<int> feature;
+  const std::optional<Real> tau = math::firstEntrySmooth(behindEnd, Real(0), limit, [&](const Real& at) {
+    feature = touching(Trajectory<Real>{ball.positionAt(at), ball.velocityAt(at), ball.a}, axisAfter(axis, at));
+    return feature.has_value();
+  });
+  if (!tau || !feature) return std::nullopt;
+  return SwingContact<Real>{*tau, *feature};
 }
 
 }  // namespace gizmo

@@ -99,11 +99,15 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     // below only finds gaps that go from positive to zero, and this gap starts at zero. (Half of
     // restSpeed: the minimum bounce sends a ball off at restSpeed, which must not count again.)
     const SwingingAxis<Real> axis = axisAt(now);
-    const std::optional<int> pressed = touchedFeature(t, r, axis, [&](const SwingTouch<Real>& touch) {
-      return !(Real(0) < touch.gap) &&
-             dot(Vec2<Real>(t.v - touch.surfaceVelocity), touch.normal) < params.restSpeed / Real(2) &&
-             Real(dot(t.a, touch.normal) + touch.bend) < Real(0);
-    });
+    // Whether a ball on path `at` touching the capsule (gap at most `slack`) is pressed into it.
+    auto pressedOn = [&params](const Trajectory<Real>& at, const Real& slack) {
+      return [&params, &at, slack](const SwingTouch<Real>& touch) {
+        return !(slack < touch.gap) &&
+               dot(Vec2<Real>(at.v - touch.surfaceVelocity), touch.normal) < params.restSpeed / Real(2) &&
+               Real(dot(at.a, touch.normal) + touch.bend) < Real(0);
+      };
+    };
+    const std::optional<int> pressed = touchedFeature(t, r, axis, pressedOn(t, Real(0)));
     if (pressed) return Contact<Real>{now, *pressed, EventKind::Collision};
     const Real toLimit = limit - now, toStop = stopTime() - now;
     const Real horizon = minOf(toLimit, toStop);
@@ -115,6 +119,14 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     const Real searchEnd = best ? Real(best->time - now) : horizon;
     if (const auto hit = swingingCapsuleTimeOfImpact(t, r, axis, searchEnd))
       if (!best || now + hit->tau < best->time) best = Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
+    // A ball on the pivot's circle that a side's end comes under (sideEndComesUnder), touching
+    // the side then to within its position resolution and pressed into it.
+    const Real endSearch = best ? Real(best->time - now) : horizon;
+    const auto reached = sideEndComesUnder(t, r, axis, endSearch, [&](const Trajectory<Real>& at, const SwingingAxis<Real>& then) {
+      return touchedFeature(at, r, then, pressedOn(at, positionResolution(at.p)));
+    });
+    if (reached && (!best || now + reached->tau < best->time))
+      best = Contact<Real>{now + reached->tau, reached->feature, EventKind::Collision};
     if (!best && !(toLimit < toStop)) best = strikeAsTheSwingEnds(*ball, r);
     return best;
   }
