@@ -1,0 +1,75 @@
+# What the checks on a file the gizmo command writes share (tests/browser/check_rendered_file.cmake
+# for `gizmo render`, tests/integration/play_page.cmake for `gizmo play`), with the script's
+# variables GIZMO, OUTPUT and EXIT (and STDERR, CONTAINS where given).
+
+# gizmo_write_checked(SUBCOMMAND): runs `GIZMO SUBCOMMAND ARGS... -o OUTPUT` with the script's
+# arguments after `--` (left in `args`, its output in `out` and `err`), and fails unless it exited
+# with EXIT, left no temporary file and, where STDERR is given, said what it matches. A refusal
+# (EXIT not 0) must write nothing and say why; the script then ends here.
+macro(gizmo_write_checked subcommand)
+  set(args)
+  set(seen_separator OFF)
+  foreach(i RANGE ${CMAKE_ARGC})
+    if(seen_separator AND DEFINED CMAKE_ARGV${i})
+      list(APPEND args "${CMAKE_ARGV${i}}")
+    elseif("${CMAKE_ARGV${i}}" STREQUAL "--")
+      set(seen_separator ON)
+    endif()
+  endforeach()
+  get_filename_component(out_dir ${OUTPUT} DIRECTORY)
+  file(MAKE_DIRECTORY ${out_dir})
+  file(REMOVE ${OUTPUT})
+  execute_process(COMMAND ${GIZMO} ${subcommand} ${args} -o ${OUTPUT} RESULT_VARIABLE code OUTPUT_VARIABLE out
+                  ERROR_VARIABLE err)
+  if(NOT code EQUAL EXIT)
+    message(FATAL_ERROR "gizmo ${subcommand} exited ${code}, expected ${EXIT}\n${out}\n${err}")
+  endif()
+  file(GLOB leftovers ${OUTPUT}.partial-*)
+  if(leftovers)
+    message(FATAL_ERROR "a temporary file was left behind: ${leftovers}")
+  endif()
+  if(DEFINED STDERR AND NOT err MATCHES "${STDERR}")
+    message(FATAL_ERROR "stderr does not match ${STDERR}:\n${err}")
+  endif()
+  if(NOT EXIT EQUAL 0)
+    if(EXISTS ${OUTPUT})
+      message(FATAL_ERROR "a refused gizmo ${subcommand} left ${OUTPUT}")
+    endif()
+    if(err STREQUAL "")
+      message(FATAL_ERROR "a refused gizmo ${subcommand} said nothing on stderr")
+    endif()
+    return()
+  endif()
+  if(NOT EXISTS ${OUTPUT})
+    message(FATAL_ERROR "no ${OUTPUT}")
+  endif()
+endmacro()
+
+# gizmo_check_parts(TEXT PART...): fails unless TEXT holds every PART.
+function(gizmo_check_parts text)
+  foreach(part ${ARGN})
+    string(FIND "${text}" "${part}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "${OUTPUT} lacks ${part}")
+    endif()
+  endforeach()
+endfunction()
+
+# gizmo_check_self_contained(TEXT): a page that loads nothing (no network address, external
+# script, style sheet or unfilled template marker), and, where CONTAINS is given, matches it.
+function(gizmo_check_self_contained text)
+  foreach(forbidden "http" "<script src" "{{" "<link" "@import" "url(")
+    string(FIND "${text}" "${forbidden}" at)
+    if(NOT at EQUAL -1)
+      math(EXPR from "${at} - 40")
+      if(from LESS 0)
+        set(from 0)
+      endif()
+      string(SUBSTRING "${text}" ${from} 100 context)
+      message(FATAL_ERROR "${OUTPUT} holds '${forbidden}': …${context}…")
+    endif()
+  endforeach()
+  if(DEFINED CONTAINS AND NOT text MATCHES "${CONTAINS}")
+    message(FATAL_ERROR "${OUTPUT} does not match ${CONTAINS}")
+  endif()
+endfunction()
