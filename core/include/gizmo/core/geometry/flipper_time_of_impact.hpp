@@ -173,12 +173,10 @@ std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, cons
     // (the generator's first draw with boosters, classic, gravity 1000: docs/fuzzing.md).
     const Real sigma = feature == 0 ? Real(1) : Real(-1);
     touch.bend = sigma * Real(2) * axis.omega * dot(ball.v, u) - axis.omega * axis.omega * across;
-    // At the pivot end, closer than the ball's position resolution counts as along the side: the
-    // pivot's circle does not move, so a ball resting on it a rounding behind the side's end is
-    // touched by nothing that closes, yet the side turning into it sweeps over it within 10⁻¹⁴ s
-    // (a ball put back there by a Newton's cradle of balls, 3.6·10⁻¹⁴ L behind the end: found by
-    // the fuzzer, seed 299792458 case 11204, docs/fuzzing.md). The tip end needs no such rule:
-    // the tip's circle moves with the side, and its own gap closes.
+    // At the pivot end, closer than the ball's position resolution counts as along the side: a
+    // ball on the pivot's circle is met by the side where its end comes under the ball
+    // (sideEndComesUnder below), and there `along` is zero only to within rounding. The tip end
+    // needs no such rule: the tip's circle moves with the side, and its own gap closes.
     const Real behindPivot = positionResolution(ball.p);
     touch.alongAxis = -behindPivot <= along && along <= axis.length && Real(0) <= across;
   } else if (feature == 3) {
