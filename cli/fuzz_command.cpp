@@ -51,7 +51,7 @@ void printFailures(const fz::CampaignResult& r) {
   }
 }
 
-// --check: one property on one run read from files.
+// --check: the properties on one run read from files.
 int checkOne(const FuzzOptions& o, const std::vector<const fz::Property*>& properties) {
   CheckedRun run;
   int code = kExitOk;
@@ -59,13 +59,10 @@ int checkOne(const FuzzOptions& o, const std::vector<const fz::Property*>& prope
   options.board = o.check;
   if (!checkRun(options, "fuzz", run, code)) return code;
   int result = kExitOk;
-  for (const fz::Property* p : properties) {
-    fz::PropertyResult r;
-    try {
-      r = p->check(run.request);
-    } catch (const std::exception& e) {
-      r = fz::PropertyResult{false, std::string("threw: ") + e.what(), 0};
-    }
+  const std::vector<fz::PropertyResult> results = fz::checkProperties(properties, run.request);
+  for (std::size_t k = 0; k < properties.size(); ++k) {
+    const fz::Property* p = properties[k];
+    const fz::PropertyResult& r = results[k];
     std::cout << p->name << ": " << (r.holds ? "holds" : "FAILS") << '\n';
     if (!r.holds) {
       std::cout << "  " << r.message << '\n';

@@ -29,11 +29,8 @@ constexpr const char* kResultsMagic = "gizmo-fuzz-results 1";
 
 // A property that throws does not hold: the exception is what it says.
 PropertyResult checkSafely(const Property& p, const RunRequest& run) {
-  try {
-    return p.check(run);
-  } catch (const std::exception& e) {
-    return PropertyResult{false, std::string("threw: ") + e.what(), 0};
-  }
+  const Property* const one[] = {&p};
+  return checkProperties(one, run).front();
 }
 
 std::string hex(std::uint64_t x) {
@@ -105,13 +102,15 @@ CampaignResult runCampaign(const CampaignOptions& o) {
       const std::uint64_t index = planned[slot];
       const RunRequest run = caseRun(o.seed, index);
       std::uint64_t failed = 0;
-      for (const Property* p : o.properties) {
+      const std::vector<PropertyResult> results = checkProperties(o.properties, run);
+      for (std::size_t k = 0; k < o.properties.size(); ++k) {
+        const Property* p = o.properties[k];
         CaseOutcome c;
         c.index = index;
         c.seed = caseSeed(o.seed, index);
         c.size = caseSize(index);
         c.property = std::string(p->name);
-        const PropertyResult r = checkSafely(*p, run);
+        const PropertyResult& r = results[k];
         c.holds = r.holds;
         c.fingerprint = r.fingerprint;
         if (!r.holds) {

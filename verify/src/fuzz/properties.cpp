@@ -35,13 +35,18 @@ struct Digest {
   void add(const std::string& s) { add(s.data(), s.size()); }
 };
 
-PropertyResult fromInvariant(const RunRequest& run, Invariant which) {
-  const InvariantRun r = checkInvariants<double>(run, {which});
+// What a run under the invariant checker says of one of the invariants it checked.
+PropertyResult invariantResult(const InvariantRun& r, Invariant which) {
   Digest d;
   d.add(r.events);
   d.add(r.energy);
-  if (r.violations.empty()) return PropertyResult{true, "", d.h};
-  return PropertyResult{false, r.violations.front().message, d.h, r.violations.front().time};
+  for (const Violation& v : r.violations)
+    if (v.invariant == which) return PropertyResult{false, v.message, d.h, v.time};
+  return PropertyResult{true, "", d.h};
+}
+
+PropertyResult fromInvariant(const RunRequest& run, Invariant which) {
+  return invariantResult(checkInvariants<double>(run, {which}), which);
 }
 
 PropertyResult noTunnelling(const RunRequest& run) { return fromInvariant(run, Invariant::NoTunnelling); }
@@ -290,10 +295,12 @@ PropertyResult compareModelDecisions(std::vector<PhysicalDecision> c, std::vecto
 namespace {
 
 constexpr Property kProperties[] = {
-    {"no-tunnelling", "no ball inside a gizmo or beyond a wall, at every event and between events", &noTunnelling},
-    {"energy", "energy rises only by what flipper hits, absorber shots and boosters supply; friction ticks slow balls", &energy},
+    {"no-tunnelling", "no ball inside a gizmo or beyond a wall, at every event and between events", &noTunnelling,
+     Invariant::NoTunnelling},
+    {"energy", "energy rises only by what flipper hits, absorber shots and boosters supply; friction ticks slow balls", &energy,
+     Invariant::Energy},
     {"event-queue", "time never goes back; the queue holds exactly the pending events; every moving ball is covered",
-     &eventQueue},
+     &eventQueue, Invariant::EventQueue},
     {"replay-identity", "recording twice gives the same log, and replaying it gives the same decisions", &replayIdentity},
     {"round-trip", "board -> XML -> board and board -> text -> board give the same board; key scripts too", &roundTrip},
     {"models-agree", "with gravity and friction 0, classic and ballistic make the same decisions", &modelsAgree},
@@ -302,6 +309,37 @@ constexpr Property kProperties[] = {
 }  // namespace
 
 std::span<const Property> allProperties() { return kProperties; }
+
+std::vector<PropertyResult> checkProperties(std::span<const Property* const> properties, const RunRequest& run) {
+  auto threw = [](const std::exception& e) { return PropertyResult{false, std::string("threw: ") + e.what(), 0}; };
+  std::vector<Invariant> invariants;
+  for (const Property* p : properties)
+    if (p->invariant) invariants.push_back(*p->invariant);
+  std::optional<InvariantRun> watched;
+  std::optional<PropertyResult> watchThrew;
+  if (invariants.size() > 1) {
+    try {
+      watched = checkInvariants<double>(run, invariants);
+    } catch (const std::exception& e) {
+      watchThrew = threw(e);
+    }
+  }
+  std::vector<PropertyResult> results;
+  for (const Property* p : properties) {
+    if (p->invariant && watchThrew) {
+      results.push_back(*watchThrew);
+    } else if (p->invariant && watched) {
+      results.push_back(invariantResult(*watched, *p->invariant));
+    } else {
+      try {
+        results.push_back(p->check(run));
+      } catch (const std::exception& e) {
+        results.push_back(threw(e));
+      }
+    }
+  }
+  return results;
+}
 
 const Property* findProperty(std::string_view name) {
   for (const Property& p : kProperties)

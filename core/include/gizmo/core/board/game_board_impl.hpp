@@ -20,6 +20,9 @@ inline constexpr std::uint64_t kMaxEventsInBurst = 1000000;
 inline constexpr double kBurstGap = 1e-9;
 // Widening of a ball's swept box, in L: far above rounding, far below any gap that matters.
 inline constexpr double kBroadPhaseMargin = 1e-6;
+// Above this many cells a ball's box is wide (GameBoard::wideBalls_): a ball crossing four cells
+// each way in one prediction horizon.
+inline constexpr int kWideCells = 16;
 // The grid cell holding coordinate v, clamped to the board. Compared before converting, so
 // that truncation is the floor (v >= 0), and no value (huge, NaN) converts out of range:
 // std::floor costs a library call on a target without SSE4.1, and this runs for every box.
@@ -36,20 +39,47 @@ typename GameBoard<Real>::CellRange GameBoard<Real>::cellsOf(const Box<Real>& b)
                    detail::cellOf(toDouble(b.hi.y))};
 }
 
-// Moves a ball's entries in the ball grid to the cells its new box covers (none when captured).
+template <class Real>
+bool GameBoard<Real>::isWide(const CellRange& c) {
+  return (c.x1 - c.x0 + 1) * (c.y1 - c.y0 + 1) > detail::kWideCells;
+}
+
+// Moves a ball's entries in the ball grid to the cells its new box covers, or to the wide balls
+// (none when captured).
 template <class Real>
 void GameBoard<Real>::placeBall(GizmoId id, bool inGrid) {
   const std::size_t i = static_cast<std::size_t>(id);
   CellRange& old = ballCells_[i];
   const CellRange now = inGrid ? cellsOf(boxes_[i]) : CellRange{0, -1, 0, -1};
-  // Most moves stay within the same cells (the order within a cell does not matter: the
-  // candidates taken from them are sorted by id).
+  // Most moves stay within the same cells (the order within a cell or among the wide balls does
+  // not matter: the candidates taken from them are sorted by id).
   if (now == old) return;
-  for (int y = old.y0; y <= old.y1; ++y)
-    for (int x = old.x0; x <= old.x1; ++x) std::erase(ballGrid_[std::size_t(y * kBoardSize + x)], id);
+  if (isWide(old)) {
+    std::erase(wideBalls_, id);
+  } else {
+    for (int y = old.y0; y <= old.y1; ++y)
+      for (int x = old.x0; x <= old.x1; ++x) std::erase(ballGrid_[std::size_t(y * kBoardSize + x)], id);
+  }
   old = now;
-  for (int y = old.y0; y <= old.y1; ++y)
-    for (int x = old.x0; x <= old.x1; ++x) ballGrid_[std::size_t(y * kBoardSize + x)].push_back(id);
+  if (isWide(old)) {
+    wideBalls_.push_back(id);
+  } else {
+    for (int y = old.y0; y <= old.y1; ++y)
+      for (int x = old.x0; x <= old.x1; ++x) ballGrid_[std::size_t(y * kBoardSize + x)].push_back(id);
+  }
+}
+
+// Visits every free ball listed in a cell that the box covers, and every wide ball: a superset of
+// the balls whose boxes overlap it (boxes that overlap share a cell, since cellsOf is monotone),
+// with repeats. The caller checks the overlap.
+template <class Real>
+template <class Visit>
+void GameBoard<Real>::forEachBallNear(const Box<Real>& box, Visit visit) const {
+  const CellRange c = cellsOf(box);
+  for (int y = c.y0; y <= c.y1; ++y)
+    for (int x = c.x0; x <= c.x1; ++x)
+      for (GizmoId ballId : ballGrid_[std::size_t(y * kBoardSize + x)]) visit(ballId);
+  for (GizmoId ballId : wideBalls_) visit(ballId);
 }
 
 template <class Real>
@@ -164,6 +194,7 @@ void GameBoard<Real>::rebuild() {
     }
   for (auto& cell : grid_) cell.clear();
   for (auto& cell : ballGrid_) cell.clear();
+  wideBalls_.clear();
   ballCells_.assign(n, CellRange{0, -1, 0, -1});
   for (std::size_t g = 1; g < n; ++g) {  // the walls (id 0) are checked against the edges instead
     if (gizmos_[g]->asBall()) continue;
@@ -439,13 +470,10 @@ void GameBoard<Real>::recomputePending() {
       G.scheduleOwnEvents(*this);
       const Box<Real> reach = G.bounds();
       candidates_.clear();
-      const CellRange c = cellsOf(reach);
-      for (int y = c.y0; y <= c.y1; ++y)
-        for (int x = c.x0; x <= c.x1; ++x)
-          for (GizmoId ballId : ballGrid_[std::size_t(y * kBoardSize + x)]) {
-            const std::size_t bi = static_cast<std::size_t>(ballId);
-            if (stamp_[bi] != inTodo && boxes_[bi].overlaps(reach)) candidateSet_.insert(ballId);
-          }
+      forEachBallNear(reach, [&](GizmoId ballId) {
+        const std::size_t bi = static_cast<std::size_t>(ballId);
+        if (stamp_[bi] != inTodo && boxes_[bi].overlaps(reach)) candidateSet_.insert(ballId);
+      });
       candidateSet_.drainInto(candidates_);
       for (GizmoId ballId : candidates_) computePair(ballId, g);
     }
@@ -515,13 +543,12 @@ void GameBoard<Real>::gatherCandidates(GizmoId ballId, std::vector<GizmoId>& out
     candidateSet_.insert(outerWallsId());
   const CellRange c = cellsOf(box);
   for (int y = c.y0; y <= c.y1; ++y)
-    for (int x = c.x0; x <= c.x1; ++x) {
-      const std::size_t cell = std::size_t(y * kBoardSize + x);
-      for (GizmoId g : grid_[cell])
+    for (int x = c.x0; x <= c.x1; ++x)
+      for (GizmoId g : grid_[std::size_t(y * kBoardSize + x)])
         if (boxes_[static_cast<std::size_t>(g)].overlaps(box)) candidateSet_.insert(g);
-      for (GizmoId other : ballGrid_[cell])
-        if (other != ballId && boxes_[static_cast<std::size_t>(other)].overlaps(box)) candidateSet_.insert(other);
-    }
+  forEachBallNear(box, [&](GizmoId other) {
+    if (other != ballId && boxes_[static_cast<std::size_t>(other)].overlaps(box)) candidateSet_.insert(other);
+  });
   candidateSet_.drainInto(out);
 }
 

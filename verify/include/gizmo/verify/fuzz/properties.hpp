@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gizmo/core/run/run.hpp"
+#include "gizmo/verify/fuzz/invariants.hpp"
 
 namespace gizmo::verify::fuzz {
 
@@ -25,6 +26,7 @@ struct Property {
   std::string_view name;
   std::string_view summary;
   PropertyResult (*check)(const RunRequest& run);
+  std::optional<Invariant> invariant = std::nullopt;  // the invariant it checks, for those that are one
 };
 
 // no-tunnelling, energy, event-queue (invariants.hpp, double precision), replay-identity,
@@ -33,6 +35,12 @@ std::span<const Property> allProperties();
 const Property* findProperty(std::string_view name);
 // "no-tunnelling, energy, …": for help texts and error messages.
 std::string propertyNames();
+
+// Each property's result on one run, in order; a property that throws does not hold ("threw: …").
+// The invariants among them are checked together, in one run under one checker: the checker only
+// watches and keeps each invariant's first violation, so each gets the result it would get alone,
+// for one simulation instead of one each (a campaign's cases spend most of their time simulating).
+std::vector<PropertyResult> checkProperties(std::span<const Property* const> properties, const RunRequest& run);
 
 // The run that models-agree compares: the same board with gravity 0 and friction 0.
 RunRequest withoutForces(const RunRequest& run);
