@@ -16,6 +16,7 @@ const char* typeName(GizmoType type) {
     case GizmoType::Absorber: return "absorber";
     case GizmoType::Booster: return "booster";
     case GizmoType::Teleporter: return "teleporter";
+    case GizmoType::Sink: return "sink";
   }
   return "square";
 }

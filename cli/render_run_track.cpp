@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "gizmo/core/gizmos/absorber.hpp"
+#include "gizmo/core/gizmos/sink.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
 #include <stdexcept>
 
@@ -50,6 +51,7 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
       throw std::runtime_error("the log's gizmo names do not follow its board");
     if (specs[i].type == GizmoType::LeftFlipper || specs[i].type == GizmoType::RightFlipper) flippers[id];
     if (specs[i].type == GizmoType::Absorber) hold[id] = Absorber<double>(specs[i]).holdPosition();
+    if (specs[i].type == GizmoType::Sink) hold[id] = Sink<double>(specs[i]).centre();
   }
   auto builderOf = [&](GizmoId id) -> BallPathBuilder* {
     const auto it = ballIndex.find(id);
@@ -100,7 +102,9 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
       case replay::DecisionType::Input: note(*d, d->key, d->direction == KeyDirection::Up ? 1 : 0); break;
       case replay::DecisionType::Rule: {
         BallPathBuilder* ball = builderOf(d->other);
-        if (d->rule == ModelRule::Captured && ball && hold.count(d->gizmo)) ball->captured(event, now, hold[d->gizmo]);
+        // A sunk ball is held at the sink's centre for good, as a captured one at its absorber's corner.
+        const bool held = d->rule == ModelRule::Captured || d->rule == ModelRule::Sunk;
+        if (held && ball && hold.count(d->gizmo)) ball->captured(event, now, hold[d->gizmo]);
         if (d->rule == ModelRule::Released && ball && hold.count(d->gizmo))
           ball->released(event, now, hold[d->gizmo], Absorber<double>::fireVelocity());
         if (d->rule == ModelRule::Teleported)

@@ -9,7 +9,7 @@ const BoardView = (function () {
   const QUARTER = Math.PI / 2;
   const BALL_COLOURS = ["#f4f4f4", "#ffe066", "#7fd1ff", "#ff9ecb", "#a5ffb0", "#ffb27a"];
   const GIZMO_FILL = { square: "#d9534f", triangle: "#3e7cd6", circle: "#3fae5a", absorber: "#8e4aa3", booster: "#e0b830",
-                       teleporter: "#2bb3c0" };
+                       teleporter: "#2bb3c0", sink: "#55556a" };
 
   // A canvas of width × height CSS pixels, sharp on a high-density screen; its context draws in
   // CSS pixels.

@@ -36,6 +36,7 @@ const char* gizmoTypeWord(GizmoType type) {
     case GizmoType::Absorber: return "absorber";
     case GizmoType::Booster: return "booster";
     case GizmoType::Teleporter: return "teleporter";
+    case GizmoType::Sink: return "sink";
   }
   return "gizmo";
 }

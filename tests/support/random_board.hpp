@@ -42,7 +42,7 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
     if (whole(0, 3) == 0)
       s.connections.push_back(ConnectSpec{g.name, s.gizmos[std::size_t(whole(0, int(s.gizmos.size()) - 1))].name, {}});
   }
-  // Half the triangles are boosters and half the circles teleporters (each with an exit), chosen by a stream of their own so that the other draws
+  // Half the triangles are boosters, half the circles teleporters (each with an exit) and a quarter of the squares sinks, chosen by a stream of their own so that the other draws
   // stay as they were before the additions (docs/physics.md, "Gizmos other programs added").
   std::mt19937_64 own(seed ^ 0x6164646974696f6eULL);
   for (GizmoSpec& g : s.gizmos)
@@ -58,6 +58,8 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
                                    [&](const ConnectSpec& c) { return c.source == from && c.target == to; });
     if (!twice) s.connections.push_back(ConnectSpec{from, to, {}});
   }
+  for (GizmoSpec& g : s.gizmos)
+    if (g.type == GizmoType::Square && own() % 4 == 0) g.type = GizmoType::Sink;
   const int balls = whole(1, 12);
   for (int i = 0; i < balls; ++i) {
     BallSpec b;

@@ -70,16 +70,16 @@ TEST(TextReaderLeniency, NamesGivenTwiceAreNumbered) {
 }
 
 TEST(TextReaderLeniency, AdditionsAreLeftOutByName) {
-  const ReadResult r = read("Square S 1 1\nSink K 5 5\nSpawner P 7 7\nConnect S K\nConnect K S\nKeyConnect key 32 down P\n"
+  const ReadResult r = read("Square S 1 1\nDeathSquare K 5 5\nSpawner P 7 7\nConnect S K\nConnect K S\nKeyConnect key 32 down P\n"
                             "Rotate P\ncolor S #ff0000\nMouseConnect left-click press S\n");
   EXPECT_EQ(r.board.gizmos.size(), 1u);
   EXPECT_TRUE(r.board.connections.empty());
   EXPECT_TRUE(r.board.keyConnections.empty());
   const std::vector<std::string> w = formatted(r.warnings);
   ASSERT_EQ(w.size(), 5u);
-  EXPECT_EQ(w[0], "b.txt:2:1: warning: 'Sink' (a square that removes the balls that hit it, from lheckemann/gizmoball) is "
+  EXPECT_EQ(w[0], "b.txt:2:1: warning: 'DeathSquare' (a square that stops the ball, from d-g-n/CS308-GizmoBall) is "
                   "not a gizmo this simulator knows; it is left out, and so are the commands that name 'K'");
-  EXPECT_EQ(w[2], "b.txt:4:1: warning: 'Connect' names 'K', the 'Sink' that is left out; the command is ignored (and 3 "
+  EXPECT_EQ(w[2], "b.txt:4:1: warning: 'Connect' names 'K', the 'DeathSquare' that is left out; the command is ignored (and 3 "
                   "more like this)");
   EXPECT_EQ(w[3], "b.txt:8:1: warning: 'color' lines (a colour, from NiklavsM/Gizmoball, JedBurrows/CS308-GIzmoball) do "
                   "not change how the board plays; ignored");

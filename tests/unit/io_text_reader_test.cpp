@@ -7,7 +7,9 @@
 #include <string>
 
 #include "gizmo/io/board_file.hpp"
+#include "gizmo/io/board_writer.hpp"
 #include "gizmo/io/text_reader.hpp"
+#include "gizmo/io/xml_reader.hpp"
 #include "io_test_util.hpp"
 
 namespace gizmo::io {
@@ -221,6 +223,26 @@ TEST(TextReader, BoostersAsTheirProgramWritesThem) {
   EXPECT_EQ(gizmo(r.board, "1_3")->orientation, 0);
   for (const std::string& w : formatted(r.warnings)) EXPECT_EQ(w.find("Booster"), std::string::npos) << w;
   EXPECT_EQ(firstTextError("Booster U 1"), "b.txt:1:1: error: Booster needs 3 values (Booster NAME X Y) but the line has 2");
+}
+
+// As lheckemann/gizmoball writes it (StandardLoader.java:188-201: Sink NAME X Y), read without a
+// warning; written back as the same line, and as <sink> in XML.
+TEST(TextReader, SinksAsTheirProgramWritesThem) {
+  const ReadResult r = readTextBoard("Sink Sink0 4 7\nSquare S 1 1\nConnect Sink0 S\n", "b.txt");
+  EXPECT_TRUE(r.warnings.empty());
+  ASSERT_EQ(r.board.gizmos.size(), 2u);
+  EXPECT_EQ(r.board.gizmos[0].type, GizmoType::Sink);
+  EXPECT_EQ(r.board.gizmos[0].x, 4);
+  EXPECT_EQ(r.board.gizmos[0].y, 7);
+  const std::string text = writeTextBoard(r.board);
+  EXPECT_NE(text.find("Sink Sink0 4 7\n"), std::string::npos) << text;
+  const std::string xml = writeXmlBoard(r.board);
+  EXPECT_NE(xml.find("<sink name=\"Sink0\" x=\"4\" y=\"7\""), std::string::npos) << xml;
+  const ReadResult back = readXmlBoard(xml, "b.xml");
+  EXPECT_TRUE(back.warnings.empty());
+  ASSERT_EQ(back.board.gizmos.size(), 2u);
+  EXPECT_EQ(back.board.gizmos[0].type, GizmoType::Sink);
+  EXPECT_EQ(back.board.connections.size(), 1u);
 }
 
 TEST(TextReader, EmptyAndBlankFilesGiveTheDefaultBoard) {

@@ -35,6 +35,7 @@ const char* xmlElement(GizmoType t) {
     case GizmoType::Absorber: return "absorber";
     case GizmoType::Booster: return "booster";
     case GizmoType::Teleporter: return "teleporter";
+    case GizmoType::Sink: return "sink";
   }
   return "squareBumper";
 }
@@ -49,6 +50,7 @@ const char* textCommand(GizmoType t) {
     case GizmoType::Absorber: return "Absorber";
     case GizmoType::Booster: return "Booster";
     case GizmoType::Teleporter: return "Teleporter";
+    case GizmoType::Sink: return "Sink";
   }
   return "Square";
 }

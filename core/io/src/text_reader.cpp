@@ -41,6 +41,7 @@ constexpr CommandInfo kCommands[] = {
     // Additions, spelled as the programs that invented them spell them (docs/board-files.md §2).
     {"Booster", Cmd::Gizmo, GizmoType::Booster, 4, "Booster NAME X Y"},
     {"Teleporter", Cmd::Gizmo, GizmoType::Teleporter, 4, "Teleporter NAME X Y"},
+    {"Sink", Cmd::Gizmo, GizmoType::Sink, 4, "Sink NAME X Y"},
     {"Ball", Cmd::Ball, GizmoType::Square, 6, "Ball NAME X Y VX VY"},
     {"Rotate", Cmd::Rotate, GizmoType::Square, 2, "Rotate NAME"},
     {"Delete", Cmd::Delete, GizmoType::Square, 2, "Delete NAME"},

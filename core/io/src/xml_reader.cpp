@@ -66,6 +66,7 @@ constexpr GizmoElement kGizmoElements[] = {
     {"triangleBumper", GizmoType::Triangle}, {"leftFlipper", GizmoType::LeftFlipper},
     {"rightFlipper", GizmoType::RightFlipper}, {"absorber", GizmoType::Absorber},
     {"booster", GizmoType::Booster},       {"teleporter", GizmoType::Teleporter},
+    {"sink", GizmoType::Sink},
 };
 
 // " (did you mean <squareBumper>?)" when name differs from one of known only in case.

@@ -61,7 +61,8 @@ struct Builder {
 
   // The additions of other programs (docs/physics.md, "Gizmos other programs added") take the
   // place of gizmos of the same outline: half the triangles become boosters, half the circles
-  // teleporters. The choice is drawn
+  // teleporters, a quarter of the squares sinks (drawn last, so that boards without squares keep
+  // their boosters and teleporters). The choice is drawn
   // from a stream of its own, so that every other draw, and every board without a triangle,
   // stays what it was before the additions.
   void additions(std::uint64_t seed) {
@@ -79,6 +80,8 @@ struct Builder {
         const GizmoSpec* to = teleporters[std::size_t(own.whole(0, int(teleporters.size()) - 1))];
         board.connections.push_back(ConnectSpec{from->name, to->name, {}});
       }
+    for (GizmoSpec& g : board.gizmos)
+      if (g.type == GizmoType::Square && own.chance(4)) g.type = GizmoType::Sink;
   }
 
   void connections() {
@@ -141,7 +144,7 @@ struct Builder {
       case 0: {  // aimed exactly at a corner of a square, triangle or absorber
         const GizmoSpec* g = pickGizmo([](const GizmoSpec& s) {
           return s.type == GizmoType::Square || s.type == GizmoType::Triangle || s.type == GizmoType::Absorber ||
-                 s.type == GizmoType::Booster;
+                 s.type == GizmoType::Booster || s.type == GizmoType::Sink;
         });
         if (!g) break;
         const double cx = g->x + (rng.whole(0, 1) ? g->width : 0), cy = g->y + (rng.whole(0, 1) ? g->height : 0);

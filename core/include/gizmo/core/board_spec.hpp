@@ -10,7 +10,7 @@ namespace gizmo {
 
 // Booster and later entries: gizmos that other Gizmoball programs added (docs/physics.md,
 // "Gizmos other programs added").
-enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter };
+enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink };
 enum class KeyDirection { Down, Up };
 
 // Where a statement came from in its file (1-based; 0 when it was not read from a file).

@@ -7,6 +7,7 @@
 #include "gizmo/core/gizmos/booster.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/polygonal_gizmo.hpp"
+#include "gizmo/core/gizmos/sink.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
 
 namespace gizmo {
@@ -30,6 +31,9 @@ std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams
         break;
       case GizmoType::Teleporter:
         board->add(std::make_unique<Teleporter<Real>>(g));
+        break;
+      case GizmoType::Sink:
+        board->add(std::make_unique<Sink<Real>>(g));
         break;
       case GizmoType::LeftFlipper:
       case GizmoType::RightFlipper:

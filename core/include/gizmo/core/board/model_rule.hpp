@@ -17,9 +17,10 @@ enum class ModelRule : std::uint8_t {
   Jammed,            // too many hits at one instant: this one leaves no rebound (see docs/physics.md)
   Boosted,           // a booster doubled a ball's speed
   Teleported,        // a teleporter moved a ball to its exit
+  Sunk,              // a sink took a ball out of play
 };
 // The last rule: a log's rule value above it is refused.
-inline constexpr ModelRule kLastModelRule = ModelRule::Teleported;
+inline constexpr ModelRule kLastModelRule = ModelRule::Sunk;
 
 inline std::string_view modelRuleName(ModelRule r) {
   switch (r) {
@@ -34,6 +35,7 @@ inline std::string_view modelRuleName(ModelRule r) {
     case ModelRule::Jammed: return "jammed";
     case ModelRule::Boosted: return "boosted";
     case ModelRule::Teleported: return "teleported";
+    case ModelRule::Sunk: return "sunk";
   }
   return "?";
 }

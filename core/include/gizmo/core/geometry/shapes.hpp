@@ -78,6 +78,7 @@ Shape<Real> restShape(const GizmoSpec& g) {
   auto at = [&](double dx, double dy) { return o + Vec2<Real>(fromDouble<Real>(dx), fromDouble<Real>(dy)); };
   switch (g.type) {
     case GizmoType::Square:
+    case GizmoType::Sink:
       addPolygon(s, {at(0, 0), at(1, 0), at(1, 1), at(0, 1)});
       break;
     case GizmoType::Triangle:
