@@ -1,21 +1,22 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages that gizmo builds and tests with, when any is missing; with
-# --command, only those that building the `gizmo` command needs (what `scripts/dev run` asks for,
-# so that a first run on a fresh machine does not wait for the test libraries and gnuplot); or,
-# given package names, those instead (tests/slurm/run.sh: slurm-wlm munge).
+# --portable, only those of the portable `gizmo` command (what a first `scripts/dev run` builds,
+# so that it waits for no multiprecision library, test library or gnuplot); with --command, those
+# of the full command; or, given package names, those instead (tests/slurm/run.sh: slurm-wlm munge).
 # Non-interactive and idempotent: when everything is present it only checks and returns.
-#   scripts/setup.sh [--command | PACKAGE...]
+#   scripts/setup.sh [--portable | --command | PACKAGE...]
 set -euo pipefail
 
-command_packages=(
-  cmake ninja-build g++ pkgconf
-  libboost-dev libgmp-dev libmpfr-dev libmpfi-dev
-  libpugixml-dev libcli11-dev nlohmann-json3-dev libbox2d-dev
-)
+# The portable build of the `gizmo` command (what a first `scripts/dev run` builds), then the
+# libraries the full command adds (multiprecision, Box2D).
+portable_packages=(cmake ninja-build g++ pkgconf libpugixml-dev libcli11-dev nlohmann-json3-dev)
+command_packages=("${portable_packages[@]}" libboost-dev libgmp-dev libmpfr-dev libmpfi-dev libbox2d-dev)
 # The tests, the benchmarks and the study's charts (gizmo study runs gnuplot).
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev gnuplot-nox)
 packages=("${command_packages[@]}" "${test_packages[@]}")
-if [ "${1:-}" = --command ]; then
+if [ "${1:-}" = --portable ]; then
+  packages=("${portable_packages[@]}")
+elif [ "${1:-}" = --command ]; then
   packages=("${command_packages[@]}")
 elif [ $# -gt 0 ]; then
   packages=("$@")
