@@ -64,6 +64,14 @@ class GridBumper : public GridPlaced<AbstractGizmoWithPolygonalGeometry<Real>> {
   explicit GridBumper(const GizmoSpec& spec)
       : GridPlaced<AbstractGizmoWithPolygonalGeometry<Real>>(spec, spec.name, restShape<Real>(spec), Real(1)) {}
 
+  // The centre of the cells it stands on: where a teleporter's pass goes through, where a sink
+  // holds the balls it took.
+  Vec2<Real> centre() const {
+    const GizmoSpec s = this->spec();
+    const Real two(2);
+    return Vec2<Real>(Real(s.x) + Real(s.width) / two, Real(s.y) + Real(s.height) / two);
+  }
+
   GizmoKind kind() const override {
     switch (this->placement().type) {
       case GizmoType::Square: return GizmoKind::Square;

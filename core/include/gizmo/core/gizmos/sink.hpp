@@ -17,16 +17,10 @@ class Sink final : public GridBumper<Real> {
 
   GizmoKind kind() const override { return GizmoKind::Sink; }
 
-  Vec2<Real> centre() const {
-    const GizmoSpec s = this->spec();
-    const Real half = Real(1) / Real(2);
-    return Vec2<Real>(Real(s.x) + half, Real(s.y) + half);
-  }
-
  protected:
   void respond(Ball<Real>& ball, const Contact<Real>&, BoardAccess<Real>& board) override {
     ball.leaveContact(board);
-    ball.capture(board.now(), centre());
+    ball.capture(board.now(), this->centre());
     board.reportRule(ModelRule::Sunk, this->id(), ball.id());
   }
 };

@@ -16,12 +16,6 @@ class Teleporter final : public GridBumper<Real> {
 
   GizmoKind kind() const override { return GizmoKind::Teleporter; }
 
-  Vec2<Real> centre() const {
-    const GizmoSpec s = this->spec();
-    const Real half = Real(1) / Real(2);
-    return Vec2<Real>(Real(s.x) + half, Real(s.y) + half);
-  }
-
   // Set by the board builder from the connections: the exit and its centre.
   void setExit(GizmoId exit, const Vec2<Real>& centre) {
     exit_ = exit;
@@ -31,14 +25,14 @@ class Teleporter final : public GridBumper<Real> {
 
   // Where a ball whose centre is at p, touching this teleporter, comes out of the exit: the
   // point opposite p through the exit's centre. Exact where the scalar holds the sums exactly.
-  Vec2<Real> exitPosition(const Vec2<Real>& p) const { return exitCentre_ - (p - centre()); }
+  Vec2<Real> exitPosition(const Vec2<Real>& p) const { return exitCentre_ - (p - this->centre()); }
 
  protected:
   void respond(Ball<Real>& ball, const Contact<Real>& contact, BoardAccess<Real>& board) override {
     const Real& now = board.now();
     const Vec2<Real> p = ball.positionAt(now), v = ball.velocityAt(now);
     // Only a ball coming in passes: one that merely touches the disc bounces off it.
-    if (exit_ && dot(v, Vec2<Real>(p - centre())) < Real(0)) {
+    if (exit_ && dot(v, Vec2<Real>(p - this->centre())) < Real(0)) {
       const Vec2<Real> q = exitPosition(p);
       if (board.roomForBall(q, ball.id(), *exit_)) {
         board.reportRule(ModelRule::Teleported, this->id(), ball.id());
