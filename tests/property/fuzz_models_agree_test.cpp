@@ -51,7 +51,7 @@ TEST(ModelsAgreeComparison, AnExtraHitThatChangedNothingButFiredATriggerPartsThe
   const std::vector<PhysicalDecision> classic{hit("collision a=1 b=9", 0.5, -2), hit("collision a=6 b=9", 0.5, 1e-13, true),
                                               hit("collision a=3 b=8", 0.6, 3)};
   // (The trigger and its action are reported while the hit runs, before it.)
-  const PhysicalDecision trigger{"trigger 2 -> 7", -1, 0.5, {}}, action{"action 7", -1, 0.5, {}};
+  const PhysicalDecision trigger = consequenceAt("trigger 2 -> 7", 0.5), action = consequenceAt("action 7", 0.5);
   const std::vector<PhysicalDecision> ballistic{hit("collision a=1 b=9", 0.5, -2), trigger, action,
                                                 hit("collision a=2 b=9", 0.5, 1e-13, true), hit("collision a=3 b=8", 0.61, 3)};
   EXPECT_TRUE(compareModelDecisions(classic, ballistic).holds);
@@ -65,6 +65,45 @@ TEST(ModelsAgreeComparison, AnExtraHitThatChangedNothingButFiredATriggerPartsThe
   std::vector<PhysicalDecision> real = ballistic;
   real[3].negligible = false;
   EXPECT_FALSE(compareModelDecisions(classic, real).holds);
+}
+
+TEST(ModelsAgreeComparison, AnExtraHitThatChangedNothingButCapturedABallPartsTheRuns) {
+  // A ball stopped dead beside an absorber, tangent to it, is left moving into it at 8e-11 L/s
+  // by one model's rounding, which captures it; the other's leaves it outside, and the ball it
+  // stopped goes on to hit a wall (campaign seed 314159265, case 4834).
+  const PhysicalDecision captured = consequenceAt("captured 1 4", 0.5);
+  const std::vector<PhysicalDecision> classic{hit("collision a=3 b=4", 0.5, 0), hit("collision a=0 b=5", 0.6, -3)};
+  const std::vector<PhysicalDecision> ballistic{hit("collision a=3 b=4", 0.5, 0), captured,
+                                                hit("collision a=1 b=4", 0.5, 0, true), hit("collision a=0 b=5", 0.6, -3)};
+  EXPECT_TRUE(compareModelDecisions(classic, ballistic).holds);
+  EXPECT_TRUE(compareModelDecisions(ballistic, classic).holds);
+  // A capture by a hit that changed a velocity is a decision of its own: the other model must take it.
+  std::vector<PhysicalDecision> real = ballistic;
+  real[2].negligible = false;
+  EXPECT_FALSE(compareModelDecisions(classic, real).holds);
+}
+
+TEST(ModelsAgreeComparison, AHitClosingWithinTheTolerancesInOneRunOnlyPartsTheRuns) {
+  // A ball sliding along an absorber's top at 55 L/s, moving into it at 2e-13 L/s in one model
+  // and 0 in the other, is captured in the first: the capture stops it, a change far beyond the
+  // tolerance, but whether the hit happens at all was rounding's (seed 271828182, case 1283).
+  PhysicalDecision capturingHit = hit("collision a=1 b=4", 0.5, 0);
+  capturingHit.grazing = true;
+  const std::vector<PhysicalDecision> classic{hit("collision a=3 b=4", 0.5, 55), hit("collision a=0 b=5", 0.6, -3)};
+  const std::vector<PhysicalDecision> ballistic{classic[0], consequenceAt("captured 1 4", 0.5), capturingHit, classic[1]};
+  EXPECT_TRUE(compareModelDecisions(classic, ballistic).holds);
+  EXPECT_TRUE(compareModelDecisions(ballistic, classic).holds);
+  // A ball passing over another at a tangent strikes it in one model only, 1e-10 L lower there
+  // (seed 271828182, case 1802): no consequences, but velocities changed beyond the tolerance.
+  PhysicalDecision passingHit = hit("collision a=7 b=11", 0.55, 0.001);
+  passingHit.grazing = true;
+  const std::vector<PhysicalDecision> struck{classic[0], passingHit, classic[1]};
+  EXPECT_TRUE(compareModelDecisions(struck, classic).holds);
+  EXPECT_TRUE(compareModelDecisions(classic, struck).holds);
+  // A hit that closed faster than that is one the other model must have too.
+  PhysicalDecision firmHit = passingHit;
+  firmHit.grazing = false;
+  EXPECT_FALSE(compareModelDecisions(classic, std::vector<PhysicalDecision>{classic[0], firmHit, classic[1]}).holds);
 }
 
 TEST(ModelsAgreeComparison, ExclusiveDecisionsWithinTheTimeToleranceAreANearTie) {

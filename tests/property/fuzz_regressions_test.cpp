@@ -28,6 +28,14 @@ std::string firstViolation(const InvariantRun& run) {
   return run.violations.empty() ? std::string() : run.violations.front().message;
 }
 
+// models-agree on a run, which the shrunk board failed before the comparison learnt what rounding decides.
+void expectModelsAgree(const RunRequest& run) {
+  const Property* modelsAgree = findProperty("models-agree");
+  ASSERT_NE(modelsAgree, nullptr);
+  const PropertyResult r = modelsAgree->check(run);
+  EXPECT_TRUE(r.holds) << r.message;
+}
+
 // Seed 20261201, case 359: a ball thrown up past a flipper's pivot comes down onto the flipper's
 // top side from beside it. Its centre started behind that side's line, where the edge was never
 // looked at, and it sank 0.049 L into the flipper before the next recalculation found it there.
@@ -149,6 +157,152 @@ TEST(FuzzRegressions, ABallOnAFlippersPivotIsHitWhenTheTurningSidesEndComesUnder
     const InvariantRun result = checkInvariants<double>(run, {std::begin(kAllInvariants), std::end(kAllInvariants)});
     EXPECT_TRUE(result.violations.empty()) << firstViolation(result);
   }
+}
+
+// Campaign seed 271828182, case 1309, shrunk: without gravity a ball lies on the floor between a
+// left flipper and a right flipper's resting side. A key swings the right flipper down onto it:
+// the ball has no room, the pinch rule blocks the flipper, and the jammed ball is struck by the
+// floor and the still flipper in turn at one instant. Each jammed hit only took the normal part
+// of its velocity away, leaving cos² of the angle between the two surfaces per round: 207 L/s
+// fell to denormals and never to zero, a million hits at one instant.
+TEST(FuzzRegressions, ABallPinnedByABlockedFlipperAgainstTheFloorWithoutGravityRests) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B51", 3.75, 19.75));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G3", 2, 18, 180));
+  board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G15", 4, 18));
+  board.keyConnections.push_back(KeyConnectSpec{39, KeyDirection::Up, "G3", {}});
+  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
+    RunRequest run = ballisticRun(board, 0.05, 0.8997685654791533);
+    run.model = model;
+    run.keys.push_back(TimedKey{0.8309829893005635, 39, KeyDirection::Up});
+    const InvariantRun result = checkInvariants<double>(run, {std::begin(kAllInvariants), std::end(kAllInvariants)});
+    EXPECT_TRUE(result.violations.empty()) << firstViolation(result);
+  }
+}
+
+// Campaign seed 271828182, case 184, shrunk: the same jam in a triangle's corner, a ball without
+// gravity between a triangle's edge and two flippers, one of which a key swings into it.
+TEST(FuzzRegressions, ABallPinnedByAFlipperInATrianglesCornerWithoutGravityRests) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B11", 4.25, 3.75));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G6", 4, 2, 270));
+  board.gizmos.push_back(gizmoAt(GizmoType::Triangle, "G28", 3, 3, 180));
+  board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G29", 4, 4, 90));
+  board.keyConnections.push_back(KeyConnectSpec{37, KeyDirection::Down, "G6", {}});
+  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
+    RunRequest run = ballisticRun(board, 0.05, 0.9375278396718305);
+    run.model = model;
+    run.keys.push_back(TimedKey{0.6111364184208937, 37, KeyDirection::Down});
+    const InvariantRun result = checkInvariants<double>(run, {std::begin(kAllInvariants), std::end(kAllInvariants)});
+    EXPECT_TRUE(result.violations.empty()) << firstViolation(result);
+  }
+}
+
+// Campaign seed 314159265, case 4834, shrunk: B44 bounces back off a triangle along the top of an
+// absorber, exactly tangent to it, and stops dead striking B61 head-on. One model's rounding left
+// it 8e-15 L low, so the hit's normal gave it 8e-11 L/s into the absorber, which captured it; the
+// other's left it outside. Whether a tangent ball is captured is rounding's: the runs part there.
+TEST(FuzzRegressions, ABallStoppedDeadTangentToAnAbsorberIsCapturedOnlyByRounding) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B41", 13.25, 19.5, -4482.943635057003, 2214.320745714563));
+  board.balls.push_back(ballAt("B44", 14.5, 3.75, 5000, 0));
+  board.balls.push_back(ballAt("B61", 17.481808591616527, 3.75));
+  board.gizmos.push_back(gizmoAt(GizmoType::Absorber, "G11", 16, 4, 0, 2, 2));
+  board.gizmos.push_back(gizmoAt(GizmoType::Triangle, "G12", 3, 3, 270));
+  RunRequest run = ballisticRun(board, 0.05, 0.008833736262427245);
+  expectModelsAgree(run);
+}
+
+// Campaign seed 271828182, case 1283, shrunk: a flipper strikes B49 along an absorber's top, where
+// it strikes B27 head-on; B27 leaves at 55 L/s, tangent to the absorber, and 2e-13 L/s into it in
+// one model, which captures it. At mpfr:256 the models part the same way (4.8e-76 L/s into it in
+// the ballistic run, captured; exactly 0 in the classic run).
+TEST(FuzzRegressions, ABallStruckAlongAnAbsorbersTopIsCapturedOnlyByRounding) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B27", 12.75, 12.75));
+  board.balls.push_back(ballAt("B49", 10.25, 12.75));
+  board.gizmos.push_back(gizmoAt(GizmoType::Absorber, "G3", 7, 13, 0, 7, 6));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G7", 8, 11, 0));
+  board.keyConnections.push_back(KeyConnectSpec{39, KeyDirection::Down, "G7", {}});
+  RunRequest run = ballisticRun(board, 0.01, 0.7980590197062623);
+  run.keys.push_back(TimedKey{0.4369092349583373, 39, KeyDirection::Down});
+  run.keys.push_back(TimedKey{0.5353307956713221, 39, KeyDirection::Down});
+  expectModelsAgree(run);
+}
+
+// Campaign seed 314159265, case 3098, shrunk: B11 runs up past a teleporter, tangent to it; 1.3e-10
+// L to the side in one model, it meets the disc closing at 8e-4 L/s (above the core's graze bound)
+// and is teleported; the other passes it.
+TEST(FuzzRegressions, ABallPassingATeleporterAtATangentIsTeleportedOnlyByRounding) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B9", 14.430170898304299, 6.348699934906831, -620.1370820305395, 2045.2823007346847));
+  board.balls.push_back(ballAt("B10", 19.25, 6.75));
+  board.balls.push_back(ballAt("B11", 7.75, 17.25));
+  board.balls.push_back(ballAt("B13", 13.911862322041792, 7.800746251045482, -53.424129452487634, 192.73261891087313));
+  board.balls.push_back(ballAt("B17", 19.5, 0.5, 2.748743537656706, 39.02314596083127));
+  board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G2", 6, 15, 270));
+  board.gizmos.push_back(gizmoAt(GizmoType::Absorber, "G6", 7, 9, 0, 13, 2));
+  board.gizmos.push_back(gizmoAt(GizmoType::Triangle, "G11", 17, 8, 180));
+  board.gizmos.push_back(gizmoAt(GizmoType::Triangle, "G12", 13, 8, 270));
+  board.gizmos.push_back(gizmoAt(GizmoType::Teleporter, "G19", 8, 18, 90));
+  board.connections.push_back(ConnectSpec{"G19", "G19", {}});
+  board.connections.push_back(ConnectSpec{"G11", "G2", {}});
+  RunRequest run = ballisticRun(board, 0.05, 1.2501615405439694);
+  expectModelsAgree(run);
+}
+
+// Campaign seed 271828182, case 1802, shrunk: after a flipper's shot and a head-on hit, B51 runs
+// along a row, passing over B26 at a tangent. A negligible hit long before left it 1.2e-10 L low
+// in the classic run, where it strikes B26 closing at 2e-5 of its speed; the ballistic run
+// passes. Both are within the models' tolerances.
+TEST(FuzzRegressions, ABallPassingOverABallAtATangentStrikesItOnlyByRounding) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B14", 13.5, 5.5, -17, -17));
+  board.balls.push_back(ballAt("B24", 10.529592615409179, 9.557834714169578, -4905.6008472294425, 966.9955158436773));
+  board.balls.push_back(ballAt("B26", 2.5, 7.75));
+  board.balls.push_back(ballAt("B33", 14.75, 9.75, -188.59806671657788, 66.56402354702749));
+  board.balls.push_back(ballAt("B34", 15.5, 11.75, 1521.0280632634397, 0));
+  board.balls.push_back(ballAt("B37", 10.75, 7.25));
+  board.balls.push_back(ballAt("B51", 9.75, 7.25));
+  board.gizmos.push_back(gizmoAt(GizmoType::Triangle, "G15", 13, 4, 270));
+  board.gizmos.push_back(gizmoAt(GizmoType::Booster, "G16", 9, 11, 0));
+  board.gizmos.push_back(gizmoAt(GizmoType::Absorber, "G18", 0, 13, 0, 20, 2));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G19", 10, 7, 180));
+  board.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, "G19", {}});
+  RunRequest run = ballisticRun(board, 0.05, 1.183228986656855);
+  run.keys.push_back(TimedKey{0.7090199696951597, 32, KeyDirection::Down});
+  expectModelsAgree(run);
+}
+
+// Campaign seed 271828182, case 1389, shrunk: a crowded board in which B41, struck by a flipper,
+// runs down an absorber's side at a tangent, 2.9e-14 L/s into it in the classic run, which
+// captures it, and exactly along it in the ballistic run.
+TEST(FuzzRegressions, ABallRunningDownAnAbsorbersSideIsCapturedOnlyByRounding) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B8", 8.29358849622394, 16.75, 22.795624925945997, -11.097870029736868));
+  board.balls.push_back(ballAt("B9", 9.5, 18.75, 24.92352738690552, 39.281096916076244));
+  board.balls.push_back(ballAt("B26", 9.5, 16.80259459783602, 185.5956920814564, 74.52676754566254));
+  board.balls.push_back(ballAt("B27", 0.5511029801830736, 14.93443197397591, -92.56842103469171, 177.28814801656665));
+  board.balls.push_back(ballAt("B30", 6.365810807761517, 17.292471870567866, 8.693469504998617, 16.35266771840576));
+  board.balls.push_back(ballAt("B36", 12, 8, 98, 196));
+  board.balls.push_back(ballAt("B41", 7.25, 9.25));
+  board.balls.push_back(ballAt("B50", 14.877929424052466, 10.620310726551073, -86.18942644022192, 180.47543536422228));
+  board.balls.push_back(ballAt("B51", 2.5, 18.907878266624877, -5.650092170118662, -2.616811729895253));
+  board.balls.push_back(ballAt("B56", 13.5, 10.75));
+  board.balls.push_back(ballAt("B61", 8, 17.5, 110, -110));
+  board.balls.push_back(ballAt("B62", 10, 15.5, -110, 110));
+  board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G4", 10, 16, 0));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G9", 14, 10, 90));
+  board.gizmos.push_back(gizmoAt(GizmoType::Absorber, "G10", 5, 14, 0, 2, 3));
+  board.gizmos.push_back(gizmoAt(GizmoType::Square, "G15", 15, 12));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G20", 7, 7, 90));
+  board.gizmos.push_back(gizmoAt(GizmoType::Sink, "G28", 8, 18, 180));
+  board.gizmos.push_back(gizmoAt(GizmoType::Circle, "G35", 4, 16));
+  board.connections.push_back(ConnectSpec{"G15", "G20", {}});
+  board.keyConnections.push_back(KeyConnectSpec{37, KeyDirection::Up, "G20", {}});
+  RunRequest run = ballisticRun(board, 0.05, 0.5463069356990358);
+  run.keys.push_back(TimedKey{0.243509922025828, 37, KeyDirection::Up});
+  expectModelsAgree(run);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/verify/fuzz/checker_geometry.hpp"
 #include "gizmo/verify/fuzz/run_description.hpp"
 
 namespace gizmo::verify::fuzz {
@@ -21,9 +22,6 @@ std::string_view invariantName(Invariant i) {
 
 namespace {
 
-// A disc of radius 0.5: the circle bumper and the teleporter.
-bool isDisc(GizmoType t) { return t == GizmoType::Circle || t == GizmoType::Teleporter; }
-
 // Instants looked at between two events, evenly spaced inside the interval.
 constexpr int kSamplesBetweenEvents = 3;
 // The fastest a flipper's surface can move: 6π rad/s at 1.75 L from the pivot (the tip's far
@@ -33,34 +31,6 @@ constexpr double kFlipperSurfaceSpeed = 33.0;
 template <class Real>
 std::string text(const Real& x) {
   return exact(toDouble(x));
-}
-
-template <class Real>
-Real distanceToSegment(const Vec2<Real>& p, const Vec2<Real>& a, const Vec2<Real>& b) {
-  const Vec2<Real> ab = b - a, ap = p - a;
-  const Real len2 = lengthSquared(ab);
-  Real s = len2 == Real(0) ? Real(0) : Real(dot(ap, ab) / len2);
-  s = std::clamp(s, Real(0), Real(1));
-  return length(Vec2<Real>(ap - s * ab));
-}
-
-// Signed distance from p to a convex polygon whose vertices run clockwise on screen (y down):
-// negative inside. Written here rather than taken from the simulator's features, so that the
-// check does not share the code it checks (only the vertices, from shapes.hpp: the contract).
-template <class Real>
-Real signedDistanceToPolygon(const Vec2<Real>& p, const std::vector<Vec2<Real>>& v) {
-  const std::size_t n = v.size();
-  Real deepest = -std::numeric_limits<Real>::infinity();
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2<Real> d = v[(i + 1) % n] - v[i];
-    const Real len = length(d);
-    const Vec2<Real> outward(d.y / len, -d.x / len);
-    deepest = std::max(deepest, Real(dot(p - v[i], outward)));
-  }
-  if (deepest <= Real(0)) return deepest;
-  Real nearest = std::numeric_limits<Real>::infinity();
-  for (std::size_t i = 0; i < n; ++i) nearest = std::min(nearest, distanceToSegment(p, v[i], v[(i + 1) % n]));
-  return nearest;
 }
 
 }  // namespace

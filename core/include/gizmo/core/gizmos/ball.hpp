@@ -190,11 +190,11 @@ class Ball final : public AbstractGizmo<Real> {
     b->setVelocity(now, pb, vb, board);
   }
 
-  // Reflects off a surface with normal n (towards the ball), coefficient c and surface velocity
-  // u, applying the slow-contact rules. Returns false when the ball was not approaching.
-  // surfaceBend: how the surface's own motion bends the gap (a swinging flipper turning into
-  // the ball presses it even without gravity); 0 for surfaces that do not move.
-  bool reflect(const Vec2<Real>& n, const Real& c, const Vec2<Real>& u, SurfaceType type,
+  // Reflects off a surface of gizmo `by` with normal n (towards the ball), coefficient c and
+  // surface velocity u, applying the slow-contact rules. Returns false when the ball was not
+  // approaching. surfaceBend: how the surface's own motion bends the gap (a swinging flipper
+  // turning into the ball presses it even without gravity); 0 for surfaces that do not move.
+  bool reflect(const Vec2<Real>& n, const Real& c, const Vec2<Real>& u, SurfaceType type, GizmoId by,
                const SurfaceContact<Real>* surface, BoardAccess<Real>& board, const Real& surfaceBend = Real(0)) {
     const Real& now = board.now();
     const PhysicsParams<Real>& params = board.params();
@@ -236,14 +236,25 @@ class Ball final : public AbstractGizmo<Real> {
       }
       if (jammed) {
         // Pressed slowly onto something round with no room to bounce: it rests there.
-        comeToRest(board, surface ? surface->gizmo : kNoGizmo);
+        comeToRest(board, by);
         return true;
       }
       v += (params.restSpeed - closing) * n;
       board.reportRule(ModelRule::MinimumBounce, this->id(), kNoGizmo);
     } else if (jammed) {
+      // Struck again by the same gizmo at the instant of its last jammed hit from it: the
+      // surfaces around it turn each hit's leftover velocity into the next, so it is wedged.
+      // Without gravity nothing presses it, and the leftovers only shrink geometrically, by
+      // cos² of the angle between the surfaces per round, to denormals and never to zero: a
+      // ball pinned by a blocked flipper against the floor was hit a million times at one
+      // instant (campaign seed 271828182, case 1309). It rests, as a pair of jammed balls does.
+      if (metWhileJammed(by, now, JamMeeting::Hit)) {
+        comeToRest(board, by);
+        return true;
+      }
+      rememberJamMeeting(by, now, JamMeeting::Hit);
       v -= closing * n;  // no rebound: the normal part of the relative velocity is gone
-      board.reportRule(ModelRule::Jammed, this->id(), surface ? surface->gizmo : kNoGizmo);
+      board.reportRule(ModelRule::Jammed, this->id(), by);
     } else {
       v -= ((Real(1) + c) * closing) * n;
     }
@@ -447,8 +458,9 @@ class Ball final : public AbstractGizmo<Real> {
   bool captured_ = false;
   bool wedged_ = false;
   std::optional<SurfaceContact<Real>> contact_;
-  // The jammed meetings of the latest instant that had any, one per other ball: grazes let
-  // through (see collide), whose pair must skip its contact at that instant, and hits. In a pile
+  // The jammed meetings of the latest instant that had any, one per other gizmo: grazes let
+  // through (see collide), whose pair must skip its contact at that instant, and hits by balls
+  // and surfaces (a second hit by the same one at that instant wedges the ball). In a pile
   // a ball can graze several balls at one instant; with one remembered graze, the second
   // overwrote the first, whose pair then predicted its contact at that instant again, grazed
   // again and overwrote the other in turn, a million times (campaign seed 20261203, case 4731).

@@ -178,12 +178,12 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
       if (dist == Real(0)) return;
       const Vec2<Real> n(d.x / dist, d.y / dist);
       const Vec2<Real> surfaceVelocity = swingSurfaceVelocity(axis, ball->positionAt(now), Ball<Real>::radius(), n);
-      ball->reflect(n, coefficient(), surfaceVelocity, SurfaceType::Round, nullptr, board);
+      ball->reflect(n, coefficient(), surfaceVelocity, SurfaceType::Round, this->id(), nullptr, board);
     } else {
       const std::optional<SwingTouch<Real>> touch =
           swingTouchNow(ball->trajectoryAt(now), Ball<Real>::radius(), axis, contact.feature);
       if (!touch) return;
-      ball->reflect(touch->normal, coefficient(), touch->surfaceVelocity, SurfaceType::Round, nullptr, board, touch->bend);
+      ball->reflect(touch->normal, coefficient(), touch->surfaceVelocity, SurfaceType::Round, this->id(), nullptr, board, touch->bend);
     }
     countHit(ball->id(), board);
   }

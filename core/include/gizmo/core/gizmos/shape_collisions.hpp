@@ -72,9 +72,9 @@ void bounceOffShape(const Shape<Real>& shape, GizmoId owner, const Real& coeffic
   const std::size_t f = static_cast<std::size_t>(feature);
   if (f < shape.segments.size()) {
     const SurfaceContact<Real> surface{owner, feature, shape.segments[f], coefficient};
-    ball.reflect(*n, coefficient, Vec2<Real>(), SurfaceType::StaticSegment, &surface, board);
+    ball.reflect(*n, coefficient, Vec2<Real>(), SurfaceType::StaticSegment, owner, &surface, board);
   } else {
-    ball.reflect(*n, coefficient, Vec2<Real>(), SurfaceType::Round, nullptr, board);
+    ball.reflect(*n, coefficient, Vec2<Real>(), SurfaceType::Round, owner, nullptr, board);
   }
 }
 

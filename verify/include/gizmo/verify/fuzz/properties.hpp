@@ -53,7 +53,16 @@ struct PhysicalDecision {
   double time = 0;
   std::vector<double> values;  // positions and velocities after
   bool negligible = false;     // a hit that changed no velocity by more than the tolerance
+  bool grazing = false;        // a hit closing no faster than the tolerances let the runs differ
+  bool consequence = false;    // a trigger, action or model rule: reported while the event that caused it runs
 };
+
+// A trigger, action or model rule ("trigger 2 -> 7", "captured 1 4") at time t.
+inline PhysicalDecision consequenceAt(std::string what, double time) {
+  PhysicalDecision d{std::move(what), -1, time, {}};
+  d.consequence = true;
+  return d;
+}
 
 // models-agree's judgement of the two models' decisions (docs/fuzzing.md, "When the models may
 // part"): they agree, or part where rounding may part them, or one takes a different decision
