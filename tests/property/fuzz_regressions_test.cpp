@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "gizmo/core/run/run.hpp"
 #include "gizmo/verify/fuzz/invariants.hpp"
 #include "gizmo/verify/fuzz/properties.hpp"
 #include "support/board_builder.hpp"
@@ -302,6 +303,27 @@ TEST(FuzzRegressions, ABallRunningDownAnAbsorbersSideIsCapturedOnlyByRounding) {
   board.keyConnections.push_back(KeyConnectSpec{37, KeyDirection::Up, "G20", {}});
   RunRequest run = ballisticRun(board, 0.05, 0.5463069356990358);
   run.keys.push_back(TimedKey{0.243509922025828, 37, KeyDirection::Up});
+  expectModelsAgree(run);
+}
+
+// Campaign seed 141421356, case 3610, shrunk: a key releases the ball an absorber holds, and a
+// second release follows 66 ms later. An input's b holds its direction (1 for up), and the queue
+// took it for gizmo 1's event: when the absorber (gizmo 1) recomputed as its ball left it, the
+// release scheduled for later in that tick was removed. The classic run lost it; the ballistic
+// run, whose leave came a rounding earlier, before the release was scheduled, kept it.
+TEST(FuzzRegressions, AKeyReleaseSurvivesTheFirstGizmoRecomputing) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B23", 2.5, 15.75, -141.74608826010106, 141.0958768460639));
+  board.balls.push_back(ballAt("B25", 1.2059818662261144, 17.050295442034283));
+  board.gizmos.push_back(gizmoAt(GizmoType::Absorber, "G0", 3, 10, 0, 9, 3));
+  board.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Up, "G0", {}});
+  RunRequest run = ballisticRun(board, 0.01, 0.42401722438249745);
+  run.keys.push_back(TimedKey{0.2, 32, KeyDirection::Up});
+  run.keys.push_back(TimedKey{0.2662456921805182, 32, KeyDirection::Up});
+  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
+    run.model = model;
+    EXPECT_EQ(simulate<double>(run).executed[std::size_t(EventKind::Input)], 2u) << motionModelName(model);
+  }
   expectModelsAgree(run);
 }
 
