@@ -4,9 +4,8 @@
 #include "gizmo/core/geometry/shapes.hpp"
 
 namespace gizmo::cli {
-namespace {
 
-const char* typeName(GizmoType type) {
+const char* drawingTypeName(GizmoType type) {
   switch (type) {
     case GizmoType::Square: return "square";
     case GizmoType::Circle: return "circle";
@@ -17,9 +16,12 @@ const char* typeName(GizmoType type) {
     case GizmoType::Booster: return "booster";
     case GizmoType::Teleporter: return "teleporter";
     case GizmoType::Sink: return "sink";
+    case GizmoType::Portal: return "portal";
   }
   return "square";
 }
+
+namespace {
 
 nlohmann::ordered_json point(const Vec2<double>& p) { return nlohmann::ordered_json::array({p.x, p.y}); }
 
@@ -41,7 +43,7 @@ BoardDrawing drawingOf(const BoardSpec& board) {
       d.forwardSign = layout.forwardSign;
       d.length = kFlipperLength;
       d.radius = kFlipperRadius;
-    } else if (g.type == GizmoType::Circle || g.type == GizmoType::Teleporter) {
+    } else if (isDiscGizmo(g.type)) {
       d.centre = shape.circles.front().centre;
       d.radius = shape.circles.front().radius;
     } else {
@@ -56,7 +58,7 @@ BoardDrawing drawingOf(const BoardSpec& board) {
 nlohmann::ordered_json drawingJson(const BoardDrawing& drawing) {
   nlohmann::ordered_json gizmos = nlohmann::ordered_json::array();
   for (const GizmoDrawing& d : drawing.gizmos) {
-    nlohmann::ordered_json g{{"name", d.name}, {"type", typeName(d.type)}};
+    nlohmann::ordered_json g{{"name", d.name}, {"type", drawingTypeName(d.type)}};
     if (d.type == GizmoType::LeftFlipper || d.type == GizmoType::RightFlipper) {
       g["pivot"] = point(d.pivot);
       g["rest_quarter"] = d.restQuarter;
@@ -64,7 +66,7 @@ nlohmann::ordered_json drawingJson(const BoardDrawing& drawing) {
       g["forward_sign"] = d.forwardSign;
       g["length"] = d.length;
       g["radius"] = d.radius;
-    } else if (d.type == GizmoType::Circle || d.type == GizmoType::Teleporter) {
+    } else if (isDiscGizmo(d.type)) {
       g["centre"] = point(d.centre);
       g["radius"] = d.radius;
     } else {

@@ -32,6 +32,9 @@ struct BoardDrawing {
   std::vector<BallSpec> balls;  // where each ball starts
 };
 
+// The word for a gizmo type in a drawing's JSON and as a picture's CSS class ("left-flipper").
+const char* drawingTypeName(GizmoType type);
+
 BoardDrawing drawingOf(const BoardSpec& board);
 nlohmann::ordered_json drawingJson(const BoardDrawing& drawing);
 

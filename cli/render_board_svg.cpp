@@ -49,7 +49,8 @@ std::string gizmoSvg(const GizmoDrawing& g) {
   switch (g.type) {
     case GizmoType::Circle:
     case GizmoType::Teleporter:
-      return std::string("<circle class=\"") + (g.type == GizmoType::Circle ? "circle" : "teleporter") + "\" cx=\"" + num(g.centre.x) + "\" cy=\"" + num(g.centre.y) + "\" r=\"" +
+    case GizmoType::Portal:
+      return std::string("<circle class=\"") + drawingTypeName(g.type) + "\" cx=\"" + num(g.centre.x) + "\" cy=\"" + num(g.centre.y) + "\" r=\"" +
              num(g.radius) + "\">" + title + "</circle>\n";
     case GizmoType::LeftFlipper:
     case GizmoType::RightFlipper: {
@@ -60,12 +61,8 @@ std::string gizmoSvg(const GizmoDrawing& g) {
     default: {
       std::string points;
       for (const Vec2<double>& p : g.polygon) points += (points.empty() ? "" : " ") + pt(p);
-      const char* cls = g.type == GizmoType::Absorber  ? "absorber"
-                        : g.type == GizmoType::Triangle ? "triangle"
-                        : g.type == GizmoType::Booster  ? "booster"
-                        : g.type == GizmoType::Sink     ? "sink"
-                                                        : "square";
-      return std::string("<polygon class=\"") + cls + "\" points=\"" + points + "\">" + title + "</polygon>\n";
+      return std::string("<polygon class=\"") + drawingTypeName(g.type) + "\" points=\"" + points + "\">" + title +
+             "</polygon>\n";
     }
   }
 }
@@ -110,7 +107,7 @@ std::string boardSvg(const BoardDrawing& board, const RunTrack* trace) {
                     " " + num(side) + "\">\n";
   svg +=
       "<style>.wall{fill:#10131a;stroke:#8a93a6;stroke-width:0.06}.square{fill:#d9534f}.triangle{fill:#3e7cd6}"
-      ".circle{fill:#3fae5a}.absorber{fill:#b05cc4}.booster{fill:#e0b830}.teleporter{fill:#2bb3c0}.sink{fill:#55556a}.flipper{stroke:#f0a030;stroke-linecap:round}"
+      ".circle{fill:#3fae5a}.absorber{fill:#b05cc4}.booster{fill:#e0b830}.teleporter{fill:#2bb3c0}.portal{fill:#7b5cd6}.sink{fill:#55556a}.flipper{stroke:#f0a030;stroke-linecap:round}"
       ".ball{fill:#f4f4f4;stroke:#222;stroke-width:0.03}.trace{fill:none;stroke:#ffd54a;stroke-width:0.04;"
       "stroke-linejoin:round;opacity:0.8}.hit{fill:#ff4040}</style>\n";
   svg += "<rect class=\"wall\" x=\"0\" y=\"0\" width=\"" + num(board.size) + "\" height=\"" + num(board.size) + "\"/>\n";

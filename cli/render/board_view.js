@@ -9,7 +9,7 @@ const BoardView = (function () {
   const QUARTER = Math.PI / 2;
   const BALL_COLOURS = ["#f4f4f4", "#ffe066", "#7fd1ff", "#ff9ecb", "#a5ffb0", "#ffb27a"];
   const GIZMO_FILL = { square: "#d9534f", triangle: "#3e7cd6", circle: "#3fae5a", absorber: "#8e4aa3", booster: "#e0b830",
-                       teleporter: "#2bb3c0", sink: "#55556a" };
+                       teleporter: "#2bb3c0", portal: "#7b5cd6", sink: "#55556a" };
 
   // A canvas of width × height CSS pixels, sharp on a high-density screen; its context draws in
   // CSS pixels.
@@ -74,7 +74,7 @@ const BoardView = (function () {
     }
     ctx.fillStyle = GIZMO_FILL[g.type] || "#888";
     ctx.beginPath();
-    if (g.type === "circle" || g.type === "teleporter") ctx.arc(g.centre[0], g.centre[1], g.radius, 0, 2 * Math.PI);
+    if (g.centre) ctx.arc(g.centre[0], g.centre[1], g.radius, 0, 2 * Math.PI);
     else g.polygon.forEach((p, i) => (i ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
     ctx.closePath();
     ctx.fill();

@@ -37,6 +37,7 @@ const char* gizmoTypeWord(GizmoType type) {
     case GizmoType::Booster: return "booster";
     case GizmoType::Teleporter: return "teleporter";
     case GizmoType::Sink: return "sink";
+    case GizmoType::Portal: return "portal";
   }
   return "gizmo";
 }
@@ -268,6 +269,10 @@ void checkGeometry(const BoardSpec& board, Collector& out) {
     }
     if (!placeable) continue;
 
+    if (g.type == GizmoType::Portal && (g.exitX < 0 || g.exitY < 0 || g.exitX >= N || g.exitY >= N)) {
+      out.add(g.where, describe(g) + " has its exit at cell " + std::to_string(g.exitX) + "," + std::to_string(g.exitY) +
+                           ", which is not on the board (cells 0..19 in both)");
+    }
     const long long x0 = g.x, y0 = g.y, x1 = x0 + g.width, y1 = y0 + g.height;
     if (x0 < 0 || y0 < 0 || x1 > N || y1 > N) {
       out.add(g.where, describe(g) + " is not inside the board: it covers x " + std::to_string(x0) + ".." +

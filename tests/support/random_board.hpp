@@ -42,7 +42,9 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
     if (whole(0, 3) == 0)
       s.connections.push_back(ConnectSpec{g.name, s.gizmos[std::size_t(whole(0, int(s.gizmos.size()) - 1))].name, {}});
   }
-  // Half the triangles are boosters, half the circles teleporters (each with an exit) and a quarter of the squares sinks, chosen by a stream of their own so that the other draws
+  // Half the triangles are boosters, half the circles teleporters (each with an exit), a quarter of
+  // the squares sinks and a third of the teleporters portals (an exit cell anywhere), chosen by a
+  // stream of their own so that the other draws
   // stay as they were before the additions (docs/physics.md, "Gizmos other programs added").
   std::mt19937_64 own(seed ^ 0x6164646974696f6eULL);
   for (GizmoSpec& g : s.gizmos)
@@ -60,6 +62,12 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
   }
   for (GizmoSpec& g : s.gizmos)
     if (g.type == GizmoType::Square && own() % 4 == 0) g.type = GizmoType::Sink;
+  for (GizmoSpec& g : s.gizmos)
+    if (g.type == GizmoType::Teleporter && own() % 3 == 0) {
+      g.type = GizmoType::Portal;
+      g.exitX = int(own() % kBoardSize);
+      g.exitY = int(own() % kBoardSize);
+    }
   const int balls = whole(1, 12);
   for (int i = 0; i < balls; ++i) {
     BallSpec b;

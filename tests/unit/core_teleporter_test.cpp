@@ -1,5 +1,5 @@
-// The teleporter (docs/physics.md, "Gizmos other programs added"): its exit, the pass through
-// computed by hand, and where it is a plain circle bumper instead.
+// The teleporter and the portal (docs/physics.md, "Gizmos other programs added"): their exits,
+// the pass through computed by hand, and where each is a plain circle bumper instead.
 #include <gtest/gtest.h>
 
 #include "gizmo/core/gizmos/teleporter.hpp"
@@ -81,6 +81,58 @@ TEST(Teleporter, TheFirstTeleporterConnectedIsTheExit) {
   EXPECT_EQ(a.exitPosition(Vec2<double>(3.75, 10.5)), Vec2<double>(15.25, 4.5));
   const auto& c = dynamic_cast<const Teleporter<double>&>(board->gizmo(*board->find("C")));
   EXPECT_EQ(c.exit(), std::nullopt);
+}
+
+// Portal A in cell (4, 10), exit cell (14, 4) given by the board file: the same pass as a
+// teleporter A connected to a teleporter B in that cell, with nothing in the exit cell but the
+// ball that comes out there.
+BoardSpec portal(int exitX, int exitY) {
+  BoardSpec spec = emptyBoard(0, 0, 0);
+  GizmoSpec a = gizmoAt(GizmoType::Portal, "A", 4, 10);
+  a.exitX = exitX;
+  a.exitY = exitY;
+  spec.gizmos.push_back(a);
+  spec.balls.push_back(ballAt("K", 1.5, 10.5, 10, 0));
+  return spec;
+}
+
+TEST(Portal, APassThroughByHand) {
+  auto board = build(portal(14, 4));
+  Recorder<double> rec;
+  board->setObserver(&rec);
+  board->tick(0.3);
+  const GizmoId a = *board->find("A");
+  EXPECT_EQ(board->gizmo(a).kind(), GizmoKind::Portal);
+  ASSERT_EQ(rec.ofKind(EventKind::Collision).size(), 1u);
+  EXPECT_DOUBLE_EQ(rec.ofKind(EventKind::Collision)[0].event.time, 0.225);
+  ASSERT_EQ(rec.countRule(ModelRule::Teleported), 1);
+  EXPECT_EQ(rec.rules[0], std::make_pair(ModelRule::Teleported, a));
+  const Ball<double>& ball = board->ballById(*board->find("K"));
+  EXPECT_EQ(ball.velocityAt(board->now()), Vec2<double>(10, 0));
+  EXPECT_NEAR(ball.positionAt(board->now()).x, 16, 1e-12);
+  EXPECT_EQ(ball.positionAt(board->now()).y, 4.5);
+}
+
+// A connection does not change a portal's exit; a gizmo in the exit cell's way makes the portal
+// a circle bumper.
+TEST(Portal, ItsExitIsTheCellItsLineNames) {
+  BoardSpec connected = portal(14, 4);
+  connected.gizmos.push_back(gizmoAt(GizmoType::Teleporter, "T", 2, 2));
+  connected.connections.push_back(ConnectSpec{"A", "T", {}});
+  auto board = build(connected);
+  const auto& a = dynamic_cast<const Teleporter<double>&>(board->gizmo(*board->find("A")));
+  EXPECT_EQ(a.exit(), std::nullopt);
+  EXPECT_TRUE(a.hasExit());
+  EXPECT_EQ(a.exitPosition(Vec2<double>(3.75, 10.5)), Vec2<double>(15.25, 4.5));
+
+  BoardSpec blocked = portal(14, 4);
+  blocked.gizmos.push_back(gizmoAt(GizmoType::Square, "S", 15, 4));
+  auto bumper = build(blocked);
+  Recorder<double> rec;
+  bumper->setObserver(&rec);
+  bumper->tick(0.3);
+  EXPECT_EQ(rec.countRule(ModelRule::Teleported), 0);
+  EXPECT_EQ(bumper->ballById(*bumper->find("K")).velocityAt(bumper->now()), Vec2<double>(-10, 0));
 }
 
 }  // namespace

@@ -245,6 +245,34 @@ TEST(TextReader, SinksAsTheirProgramWritesThem) {
   EXPECT_EQ(back.board.connections.size(), 1u);
 }
 
+// As rgallagher27/308gizmoball writes it (FileParser.java:118-120: Portal NAME X Y EXITX EXITY, an
+// entry cell and an exit cell), read without a warning; written back as the same line, and as
+// <portal> with its exit in XML.
+TEST(TextReader, PortalsAsTheirProgramWritesThem) {
+  const ReadResult r = readTextBoard("Portal P1 1 9 17 1\n", "b.txt");
+  EXPECT_TRUE(r.warnings.empty());
+  ASSERT_EQ(r.board.gizmos.size(), 1u);
+  const GizmoSpec& p = r.board.gizmos[0];
+  EXPECT_EQ(p.type, GizmoType::Portal);
+  EXPECT_EQ(p.x, 1);
+  EXPECT_EQ(p.y, 9);
+  EXPECT_EQ(p.exitX, 17);
+  EXPECT_EQ(p.exitY, 1);
+  const std::string text = writeTextBoard(r.board);
+  EXPECT_NE(text.find("Portal P1 1 9 17 1\n"), std::string::npos) << text;
+  const std::string xml = writeXmlBoard(r.board);
+  EXPECT_NE(xml.find("<portal name=\"P1\" x=\"1\" y=\"9\" exitX=\"17\" exitY=\"1\"/>"), std::string::npos) << xml;
+  const ReadResult back = readXmlBoard(xml, "b.xml");
+  EXPECT_TRUE(back.warnings.empty());
+  ASSERT_EQ(back.board.gizmos.size(), 1u);
+  EXPECT_EQ(back.board.gizmos[0].exitX, 17);
+  EXPECT_EQ(back.board.gizmos[0].exitY, 1);
+  EXPECT_EQ(firstTextError("Portal P1 1 9 17"),
+            "b.txt:1:1: error: Portal needs 5 values (Portal NAME X Y EXITX EXITY) but the line has 4");
+  EXPECT_EQ(firstTextError("Portal P1 1 9 20 3"),
+            "b.txt:1:1: error: portal 'P1' has its exit at cell 20,3, which is not on the board (cells 0..19 in both)");
+}
+
 TEST(TextReader, EmptyAndBlankFilesGiveTheDefaultBoard) {
   EXPECT_TRUE(readText("").board.gizmos.empty());
   const ReadResult r = readText("\n   \n\t\n");

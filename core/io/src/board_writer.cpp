@@ -36,6 +36,7 @@ const char* xmlElement(GizmoType t) {
     case GizmoType::Booster: return "booster";
     case GizmoType::Teleporter: return "teleporter";
     case GizmoType::Sink: return "sink";
+    case GizmoType::Portal: return "portal";
   }
   return "squareBumper";
 }
@@ -51,6 +52,7 @@ const char* textCommand(GizmoType t) {
     case GizmoType::Booster: return "Booster";
     case GizmoType::Teleporter: return "Teleporter";
     case GizmoType::Sink: return "Sink";
+    case GizmoType::Portal: return "Portal";
   }
   return "Square";
 }
@@ -78,6 +80,10 @@ std::string writeXmlBoard(const BoardSpec& board) {
     switch (g.type) {
       case GizmoType::Absorber:
         out += attr("width", std::to_string(g.width)) + attr("height", std::to_string(g.height));
+        if (g.orientation != 0) out += attr("orientation", std::to_string(g.orientation));
+        break;
+      case GizmoType::Portal:
+        out += attr("exitX", std::to_string(g.exitX)) + attr("exitY", std::to_string(g.exitY));
         if (g.orientation != 0) out += attr("orientation", std::to_string(g.orientation));
         break;
       case GizmoType::Square:
@@ -112,6 +118,7 @@ std::string writeTextBoard(const BoardSpec& board) {
     if (g.type == GizmoType::Absorber)
       out += " " + std::to_string(static_cast<long long>(g.x) + g.width) + " " +
              std::to_string(static_cast<long long>(g.y) + g.height);
+    if (g.type == GizmoType::Portal) out += " " + std::to_string(g.exitX) + " " + std::to_string(g.exitY);
     out += "\n";
     const int turns = (((g.orientation / 90) % 4) + 4) % 4;
     for (int i = 0; i < turns; ++i) out += "Rotate " + g.name + "\n";

@@ -10,7 +10,6 @@ constexpr Addition kAdditions[] = {
     {"Spawner", AdditionKind::Gizmo, "a gizmo that adds a ball when triggered", "lheckemann/gizmoball"},
     {"LeftSpinningFlipper", AdditionKind::Gizmo, "a spinning flipper", "lheckemann/gizmoball"},
     {"RightSpinningFlipper", AdditionKind::Gizmo, "a spinning flipper", "lheckemann/gizmoball"},
-    {"Portal", AdditionKind::Gizmo, "a portal that moves a ball to its exit cell", "rgallagher27/308gizmoball"},
     {"Accelerator", AdditionKind::Gizmo, "a bumper that speeds the ball up", "course variants"},
     {"DeathSquare", AdditionKind::Gizmo, "a square that stops the ball", "d-g-n/CS308-GizmoBall"},
     {"Spinner", AdditionKind::Gizmo, "a spinning bar", "d-g-n/CS308-GizmoBall, NiklavsM/Gizmoball"},

@@ -42,6 +42,7 @@ constexpr CommandInfo kCommands[] = {
     {"Booster", Cmd::Gizmo, GizmoType::Booster, 4, "Booster NAME X Y"},
     {"Teleporter", Cmd::Gizmo, GizmoType::Teleporter, 4, "Teleporter NAME X Y"},
     {"Sink", Cmd::Gizmo, GizmoType::Sink, 4, "Sink NAME X Y"},
+    {"Portal", Cmd::Gizmo, GizmoType::Portal, 6, "Portal NAME X Y EXITX EXITY"},
     {"Ball", Cmd::Ball, GizmoType::Square, 6, "Ball NAME X Y VX VY"},
     {"Rotate", Cmd::Rotate, GizmoType::Square, 2, "Rotate NAME"},
     {"Delete", Cmd::Delete, GizmoType::Square, 2, "Delete NAME"},
@@ -334,8 +335,11 @@ class TextReader {
     long long v[4] = {0, 0, 0, 0};
     static const char* whats[] = {"the x coordinate", "the y coordinate", "the lower-right x coordinate",
                                   "the lower-right y coordinate"};
-    const std::size_t count = cmd.cmd == Cmd::Absorber ? 4 : 2;
-    for (std::size_t i = 0; i < count; ++i) ok = cell(t[2 + i], whats[i], v[i]) && ok;
+    static const char* exitWhats[] = {"the x coordinate", "the y coordinate", "the exit's x coordinate",
+                                      "the exit's y coordinate"};
+    const std::size_t count = cmd.tokens - 2;
+    for (std::size_t i = 0; i < count; ++i)
+      ok = cell(t[2 + i], cmd.type == GizmoType::Portal ? exitWhats[i] : whats[i], v[i]) && ok;
     if (ok && cmd.cmd == Cmd::Absorber) {
       if (v[2] <= v[0]) {
         rep_.error(at(t[4]), "the absorber's lower-right corner must lie right of its upper-left corner (X2 = " +
@@ -358,6 +362,9 @@ class TextReader {
       g.height = static_cast<int>(v[3] - v[1]);
     } else if (cmd.type == GizmoType::LeftFlipper || cmd.type == GizmoType::RightFlipper) {
       g.width = g.height = 2;
+    } else if (cmd.type == GizmoType::Portal) {
+      g.exitX = static_cast<int>(v[2]);
+      g.exitY = static_cast<int>(v[3]);
     }
     gizmos_.push_back(std::move(g));
     gizmoAlive_.push_back(1);

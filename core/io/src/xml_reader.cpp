@@ -66,7 +66,7 @@ constexpr GizmoElement kGizmoElements[] = {
     {"triangleBumper", GizmoType::Triangle}, {"leftFlipper", GizmoType::LeftFlipper},
     {"rightFlipper", GizmoType::RightFlipper}, {"absorber", GizmoType::Absorber},
     {"booster", GizmoType::Booster},       {"teleporter", GizmoType::Teleporter},
-    {"sink", GizmoType::Sink},
+    {"sink", GizmoType::Sink},             {"portal", GizmoType::Portal},
 };
 
 // " (did you mean <squareBumper>?)" when name differs from one of known only in case.
@@ -334,14 +334,15 @@ class XmlReader {
   void readGizmo(const pugi::xml_node& e, GizmoType type) {
     expectEmpty(e);
     std::map<std::string, Attr> a;
-    const bool absorber = type == GizmoType::Absorber;
+    const bool absorber = type == GizmoType::Absorber, portal = type == GizmoType::Portal;
     const bool ok0 = absorber ? attributes(e, {"name", "x", "y", "width", "height"}, {"orientation"}, a)
+                     : portal ? attributes(e, {"name", "x", "y", "exitX", "exitY"}, {"orientation"}, a)
                               : attributes(e, {"name", "x", "y"}, {"orientation"}, a);
     if (!ok0) return;
     GizmoSpec g;
     g.type = type;
     g.where = elementAt(e);
-    long long x = 0, y = 0, orientation = 0, width = 1, height = 1;
+    long long x = 0, y = 0, orientation = 0, width = 1, height = 1, exitX = 0, exitY = 0;
     if (type == GizmoType::LeftFlipper || type == GizmoType::RightFlipper) width = height = 2;
     bool ok = name(a.at("name"), g.name);
     ok = whole(a.at("x"), "x", x) && ok;
@@ -350,6 +351,10 @@ class XmlReader {
       ok = whole(a.at("width"), "width", width) && ok;
       ok = whole(a.at("height"), "height", height) && ok;
     }
+    if (portal) {
+      ok = whole(a.at("exitX"), "exitX", exitX) && ok;
+      ok = whole(a.at("exitY"), "exitY", exitY) && ok;
+    }
     if (auto it = a.find("orientation"); it != a.end()) ok = whole(it->second, "orientation", orientation) && ok;
     if (!ok) return;
     g.x = static_cast<int>(x);
@@ -357,6 +362,8 @@ class XmlReader {
     g.orientation = static_cast<int>(orientation);
     g.width = static_cast<int>(width);
     g.height = static_cast<int>(height);
+    g.exitX = static_cast<int>(exitX);
+    g.exitY = static_cast<int>(exitY);
     board_.gizmos.push_back(std::move(g));
   }
 

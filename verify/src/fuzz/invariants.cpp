@@ -75,7 +75,7 @@ InvariantChecker<Real>::InvariantChecker(const GameBoard<Real>& board, std::vect
     piece.id = GizmoId(i);
     piece.type = spec.type;
     const Shape<Real> shape = restShape<Real>(spec);
-    if (isDisc(spec.type)) piece.centre = shape.circles.front().centre;
+    if (isDiscGizmo(spec.type)) piece.centre = shape.circles.front().centre;
     else if (spec.type != GizmoType::LeftFlipper && spec.type != GizmoType::RightFlipper)
       for (const CircleFeature<Real>& c : shape.circles) piece.polygon.push_back(c.centre);
     geometry_->pieces.push_back(piece);
@@ -156,7 +156,7 @@ void InvariantChecker<Real>::checkOverlaps(const Real& time, const Snapshot& s, 
       const typename Geometry::Piece& g = geometry_->pieces[k];
       if (g.type == GizmoType::Absorber && fired_.count({g.id, b.id})) continue;  // it ignores the ball it fired
       Real distance;
-      if (isDisc(g.type)) {
+      if (isDiscGizmo(g.type)) {
         distance = length(Vec2<Real>(p - g.centre)) - fromDouble<Real>(0.5);
       } else if (!g.polygon.empty()) {
         distance = signedDistanceToPolygon(p, g.polygon);

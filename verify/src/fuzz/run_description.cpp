@@ -79,7 +79,7 @@ std::optional<std::string> boardDifference(const BoardSpec& a, const BoardSpec& 
   for (std::size_t i = 0; i < a.gizmos.size(); ++i) {
     const GizmoSpec &x = a.gizmos[i], &y = b.gizmos[i];
     if (x.type != y.type || x.name != y.name || x.x != y.x || x.y != y.y || x.orientation != y.orientation ||
-        x.width != y.width || x.height != y.height) {
+        x.width != y.width || x.height != y.height || x.exitX != y.exitX || x.exitY != y.exitY) {
       std::ostringstream s;
       s << "gizmo " << i << ": " << gizmoTypeWord(x.type) << " " << x.name << " at " << x.x << "," << x.y << " "
         << x.width << "x" << x.height << " orientation " << x.orientation << " became " << gizmoTypeWord(y.type) << " "

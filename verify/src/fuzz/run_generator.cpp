@@ -61,8 +61,9 @@ struct Builder {
 
   // The additions of other programs (docs/physics.md, "Gizmos other programs added") take the
   // place of gizmos of the same outline: half the triangles become boosters, half the circles
-  // teleporters, a quarter of the squares sinks (drawn last, so that boards without squares keep
-  // their boosters and teleporters). The choice is drawn
+  // teleporters, a quarter of the squares sinks and a third of the teleporters portals, each with
+  // an exit cell anywhere on the board (each drawn after the ones before, so that boards without
+  // squares or teleporters keep what came before). The choice is drawn
   // from a stream of its own, so that every other draw, and every board without a triangle,
   // stays what it was before the additions.
   void additions(std::uint64_t seed) {
@@ -82,6 +83,12 @@ struct Builder {
       }
     for (GizmoSpec& g : board.gizmos)
       if (g.type == GizmoType::Square && own.chance(4)) g.type = GizmoType::Sink;
+    for (GizmoSpec& g : board.gizmos)
+      if (g.type == GizmoType::Teleporter && own.chance(3)) {
+        g.type = GizmoType::Portal;
+        g.exitX = own.whole(0, kBoardSize - 1);
+        g.exitY = own.whole(0, kBoardSize - 1);
+      }
   }
 
   void connections() {

@@ -10,7 +10,7 @@ namespace gizmo {
 
 // Booster and later entries: gizmos that other Gizmoball programs added (docs/physics.md,
 // "Gizmos other programs added").
-enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink };
+enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal };
 enum class KeyDirection { Down, Up };
 
 // Where a statement came from in its file (1-based; 0 when it was not read from a file).
@@ -28,6 +28,8 @@ struct GizmoSpec {
   int width = 1;        // bounding box in L: 1×1 bumpers, 2×2 flippers, w×h absorbers
   int height = 1;
   SourcePos where;
+  int exitX = 0;  // a portal's exit cell (upper-left corner, in L); unused by the other gizmos
+  int exitY = 0;
 };
 
 struct BallSpec {

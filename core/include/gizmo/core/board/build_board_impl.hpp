@@ -30,6 +30,7 @@ std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams
         board->add(std::make_unique<Booster<Real>>(g));
         break;
       case GizmoType::Teleporter:
+      case GizmoType::Portal:
         board->add(std::make_unique<Teleporter<Real>>(g));
         break;
       case GizmoType::Sink:
@@ -72,10 +73,11 @@ std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams
   for (const ConnectSpec& c : spec.connections) {
     const GizmoId source = idOf(c.source), target = idOf(c.target);
     board->connect(source, target);
-    // A teleporter's exit is the first teleporter it is connected to (d-g-n's Teleporter.java).
+    // A teleporter's exit is the first teleporter it is connected to (d-g-n's Teleporter.java);
+    // a portal's is the cell its line names.
     auto* from = dynamic_cast<Teleporter<Real>*>(&board->gizmo(source));
     const auto* to = dynamic_cast<const Teleporter<Real>*>(&board->gizmo(target));
-    if (from && to && !from->exit()) from->setExit(target, to->centre());
+    if (from && to && !from->hasExit()) from->setExit(target, to->centre());
   }
   for (const KeyConnectSpec& k : spec.keyConnections) board->keyConnect(k.key, k.direction, idOf(k.target));
   return board;

@@ -71,6 +71,11 @@ Vec2<Real> quarterDirection(int q) {
 }
 
 // The shape of a gizmo at rest (flippers in their rest position), in board coordinates.
+// The gizmos that are a disc of radius 0.5 in their cell.
+inline bool isDiscGizmo(GizmoType t) {
+  return t == GizmoType::Circle || t == GizmoType::Teleporter || t == GizmoType::Portal;
+}
+
 template <class Real>
 Shape<Real> restShape(const GizmoSpec& g) {
   Shape<Real> s;
@@ -93,6 +98,7 @@ Shape<Real> restShape(const GizmoSpec& g) {
     }
     case GizmoType::Circle:
     case GizmoType::Teleporter:
+    case GizmoType::Portal:
       s.circles.push_back(CircleFeature<Real>{at(0.5, 0.5), fromDouble<Real>(0.5)});
       break;
     case GizmoType::Absorber:

@@ -19,7 +19,7 @@ namespace gizmo {
 
 enum class CollisionAnswer { CanCollide, Defer, NeverCollides };
 
-enum class GizmoKind { Ball, OuterWalls, Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink };
+enum class GizmoKind { Ball, OuterWalls, Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal };
 
 template <class Real> class Ball;
 

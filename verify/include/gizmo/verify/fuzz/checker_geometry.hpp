@@ -13,9 +13,6 @@
 
 namespace gizmo::verify::fuzz {
 
-// A disc of radius 0.5: the circle bumper and the teleporter.
-inline bool isDisc(GizmoType t) { return t == GizmoType::Circle || t == GizmoType::Teleporter; }
-
 template <class Real>
 Vec2<Real> nearestPointOnSegment(const Vec2<Real>& p, const Vec2<Real>& a, const Vec2<Real>& b) {
   const Vec2<Real> ab = b - a, ap = p - a;
@@ -61,7 +58,7 @@ inline std::optional<GizmoTouch> touchOnGizmo(const GizmoSpec& spec, const Vec2<
   const Shape<double> shape = restShape<double>(spec);
   GizmoTouch touch;
   Vec2<double> from;
-  if (isDisc(spec.type)) {
+  if (isDiscGizmo(spec.type)) {
     from = shape.circles.front().centre;
     touch.round = true;
     touch.radius = 0.5;
