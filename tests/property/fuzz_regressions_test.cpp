@@ -29,6 +29,15 @@ std::string firstViolation(const InvariantRun& run) {
   return run.violations.empty() ? std::string() : run.violations.front().message;
 }
 
+// Every invariant on the run, in both models.
+void expectInvariantsInBothModels(RunRequest run) {
+  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
+    run.model = model;
+    const InvariantRun result = checkInvariants<double>(run, {std::begin(kAllInvariants), std::end(kAllInvariants)});
+    EXPECT_TRUE(result.violations.empty()) << motionModelName(model) << ": " << firstViolation(result);
+  }
+}
+
 // models-agree on a run, which the shrunk board failed before the comparison learnt what rounding decides.
 void expectModelsAgree(const RunRequest& run) {
   const Property* modelsAgree = findProperty("models-agree");
@@ -151,13 +160,9 @@ TEST(FuzzRegressions, ABallOnAFlippersPivotIsHitWhenTheTurningSidesEndComesUnder
   board.balls.push_back(ballAt("B104", 18.75, 16.75));
   board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G3", 17, 16, 90));
   board.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Up, "G3", {}});
-  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
-    RunRequest run = ballisticRun(board, 0.05, 0.3);
-    run.model = model;
-    run.keys.push_back(TimedKey{0.176122196769977, 32, KeyDirection::Up});
-    const InvariantRun result = checkInvariants<double>(run, {std::begin(kAllInvariants), std::end(kAllInvariants)});
-    EXPECT_TRUE(result.violations.empty()) << firstViolation(result);
-  }
+  RunRequest run = ballisticRun(board, 0.05, 0.3);
+  run.keys.push_back(TimedKey{0.176122196769977, 32, KeyDirection::Up});
+  expectInvariantsInBothModels(run);
 }
 
 // Campaign seed 271828182, case 1309, shrunk: without gravity a ball lies on the floor between a
@@ -172,13 +177,9 @@ TEST(FuzzRegressions, ABallPinnedByABlockedFlipperAgainstTheFloorWithoutGravityR
   board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G3", 2, 18, 180));
   board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G15", 4, 18));
   board.keyConnections.push_back(KeyConnectSpec{39, KeyDirection::Up, "G3", {}});
-  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
-    RunRequest run = ballisticRun(board, 0.05, 0.8997685654791533);
-    run.model = model;
-    run.keys.push_back(TimedKey{0.8309829893005635, 39, KeyDirection::Up});
-    const InvariantRun result = checkInvariants<double>(run, {std::begin(kAllInvariants), std::end(kAllInvariants)});
-    EXPECT_TRUE(result.violations.empty()) << firstViolation(result);
-  }
+  RunRequest run = ballisticRun(board, 0.05, 0.8997685654791533);
+  run.keys.push_back(TimedKey{0.8309829893005635, 39, KeyDirection::Up});
+  expectInvariantsInBothModels(run);
 }
 
 // Campaign seed 271828182, case 184, shrunk: the same jam in a triangle's corner, a ball without
@@ -190,13 +191,9 @@ TEST(FuzzRegressions, ABallPinnedByAFlipperInATrianglesCornerWithoutGravityRests
   board.gizmos.push_back(gizmoAt(GizmoType::Triangle, "G28", 3, 3, 180));
   board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G29", 4, 4, 90));
   board.keyConnections.push_back(KeyConnectSpec{37, KeyDirection::Down, "G6", {}});
-  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
-    RunRequest run = ballisticRun(board, 0.05, 0.9375278396718305);
-    run.model = model;
-    run.keys.push_back(TimedKey{0.6111364184208937, 37, KeyDirection::Down});
-    const InvariantRun result = checkInvariants<double>(run, {std::begin(kAllInvariants), std::end(kAllInvariants)});
-    EXPECT_TRUE(result.violations.empty()) << firstViolation(result);
-  }
+  RunRequest run = ballisticRun(board, 0.05, 0.9375278396718305);
+  run.keys.push_back(TimedKey{0.6111364184208937, 37, KeyDirection::Down});
+  expectInvariantsInBothModels(run);
 }
 
 // Campaign seed 314159265, case 4834, shrunk: B44 bounces back off a triangle along the top of an
