@@ -324,5 +324,45 @@ TEST(FuzzRegressions, AKeyReleaseSurvivesTheFirstGizmoRecomputing) {
   expectModelsAgree(run);
 }
 
+// Campaign seed 577215664, case 2920, shrunk: a right flipper connected to itself is keyed at t = 0
+// with a ball resting against its pivot end, on a board whose other balls jam it at that instant.
+// The side turning either way presses a ball at the pivot (the gap's curvature has -ω²q·n), so
+// each hit, jammed, left the ball at rest, fired the flipper's own trigger and reversed it into
+// the next hit; a reversal re-anchored the swing and cleared the pinch count, a million times at
+// one instant. The count now runs on through a swing that turns at the instant it began, and a
+// flipper blocked at an instant ignores triggers for the rest of it.
+TEST(FuzzRegressions, ASelfTriggeredFlipperReversingIntoABallOnItsPivotIsBlocked) {
+  BoardSpec board = test::emptyBoard(1000, 0.025, 0.025);
+  board.balls.push_back(ballAt("B4", 16.5, 19.75));
+  board.balls.push_back(ballAt("B33", 8.5, 19.75, 0.005960481080667188, 0));
+  board.balls.push_back(ballAt("B34", 4.5, 12.569107579211147, 2799.476304935194, -850.9421367424158));
+  board.balls.push_back(ballAt("B35", 3.75, 3.75));
+  board.balls.push_back(ballAt("B36", 2, 9.5, 48, -24));
+  board.balls.push_back(ballAt("B37", 8.75, 6.75));
+  board.balls.push_back(ballAt("B38", 16.5, 19.25, 0.5733186900687958, 0));
+  board.balls.push_back(ballAt("B40", 19.5, 12.802489780420073, 0.002354812455953992, 0.002513787136524726));
+  board.balls.push_back(ballAt("B41", 8.5, 10.5, -54, 0));
+  board.balls.push_back(ballAt("B42", 5.5, 10.5, 54, -0));
+  board.balls.push_back(ballAt("B43", 2.25, 3.75));
+  board.balls.push_back(ballAt("B47", 13.968221320307538, 6.75));
+  board.balls.push_back(ballAt("B55", 15.041816088061239, 17.594944677942813));
+  board.balls.push_back(ballAt("B56", 5.5, 10, -29, -29));
+  board.balls.push_back(ballAt("B57", 3.5, 8, 29, 29));
+  board.balls.push_back(ballAt("B58", 10.5, 17.5, 70, -35));
+  board.balls.push_back(ballAt("B59", 12.5, 16.5, -70, 35));
+  board.balls.push_back(ballAt("B64", 2.5, 7.25, 42.52468980246044, 0));
+  board.balls.push_back(ballAt("B65", 1.320142392397085, 16.75, 10.687050875997432, -199.714263245202));
+  board.balls.push_back(ballAt("B66", 13.25, 3.25));
+  board.balls.push_back(ballAt("B67", 17, 9.5, 12, 6));
+  board.balls.push_back(ballAt("B68", 19, 10.5, -12, -6));
+  board.gizmos.push_back(gizmoAt(GizmoType::Square, "G1", 16, 18, 90));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G29", 11, 3, 0));
+  board.connections.push_back(ConnectSpec{"G29", "G29", {}});
+  board.keyConnections.push_back(KeyConnectSpec{37, KeyDirection::Down, "G29", {}});
+  RunRequest run = ballisticRun(board, 0.05, 1.0404441959105033);
+  run.keys.push_back(TimedKey{0, 37, KeyDirection::Down});
+  expectInvariantsInBothModels(run);
+}
+
 }  // namespace
 }  // namespace gizmo::verify::fuzz

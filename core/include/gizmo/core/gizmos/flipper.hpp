@@ -54,6 +54,11 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
   // Seed: fireTrigger. At rest: swing forward; at the end: swing back; mid-swing: reverse.
   void fireTrigger(BoardAccess<Real>& board) override {
     const Real& now = board.now();
+    // Blocked by the pinch rule at this very instant: it stays so until time moves on. A
+    // flipper connected to itself is triggered by each of its own hits, and a ball on its pivot
+    // is pressed by the side turning either way, so each hit reversed the swing into another
+    // hit, a million times at one instant (campaign seed 577215664, case 2920).
+    if (blocked_ && t0_ == now) return;
     const Real s = progressAt(now);
     int next;
     if (direction_ != 0) next = -direction_;
@@ -229,12 +234,14 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
   }
 
   void anchor(const Real& t, const Real& s, int direction) {
+    // The pinch count is per swing; a swing that turns at the instant it began goes on with it
+    // (those hits all happened at that instant), so a flipper reversed by each hit is blocked too.
+    if (!(t == t0_)) hits_.clear();
     t0_ = t;
     s0_ = s;
     if (direction_ != 0) lastDirection_ = direction_;
     direction_ = direction;
     blocked_ = false;
-    hits_.clear();
     if (direction_ == 0) stillShape_ = shapeAt(s0_);
   }
 
