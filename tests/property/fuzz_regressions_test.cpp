@@ -364,5 +364,23 @@ TEST(FuzzRegressions, ASelfTriggeredFlipperReversingIntoABallOnItsPivotIsBlocked
   expectInvariantsInBothModels(run);
 }
 
+// Campaign seed 173205080, case 272, shrunk: without gravity B11 knocks B6 against a right
+// flipper's pivot end, where a jam leaves it at -2.3e-13 L/s, still touching. A hit on G15 swings
+// G11 away from B6. The classic run kept B6 on the side's end to the last bit and struck it off
+// at the minimum bounce; the ballistic run had moved it an ulp away and did not. Neither should:
+// the side's end leaves the ball, and the pivot's circle turns in place.
+TEST(FuzzRegressions, ABallOnAFlippersPivotIsLeftAloneWhenTheSidesEndTurnsAway) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B6", 8.75, 8.75));
+  board.balls.push_back(ballAt("B11", 6.606399368340863, 5.471082203081327, 1752.670934976514, 2547.6969260998812));
+  board.balls.push_back(ballAt("B29", 14.5, 5.5));
+  board.balls.push_back(ballAt("B34", 8.325142776152209, 14.75, 3210.8523921761844, -3832.8092720166073));
+  board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G4", 7, 9, 90));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G11", 9, 7, 180));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G15", 9, 13, 0));
+  board.connections.push_back(ConnectSpec{"G15", "G11", {}});
+  expectModelsAgree(ballisticRun(board, 0.05, 0.019603276181580084));
+}
+
 }  // namespace
 }  // namespace gizmo::verify::fuzz

@@ -419,6 +419,29 @@ TEST(Flipper, SwingIntoATouchingBallAtThePivotStrikesIt) {
   EXPECT_GE(nearest, 0.5 - 1e-9);
 }
 
+// The mirror of the test above: the ball touches the pivot end on the side that turns away from
+// it. The side's end leaves the ball at once and the pivot's circle turns in place, so nothing
+// touches it and it stays where it is (it was struck off at the minimum bounce, in both models:
+// the turning side's line was taken to press it; campaign seed 173205080, case 272).
+TEST(Flipper, SwingAwayFromATouchingBallAtThePivotLeavesItAlone) {
+  for (const MotionModel model : {MotionModel::Classic, MotionModel::Ballistic}) {
+    BoardSpec s = emptyBoard(0, 0, 0);
+    s.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "F", 6, 12, 270));
+    s.balls.push_back(ballAt("B", 6.25, 14.25));  // touches the pivot end at (6.25, 13.75), below it
+    s.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, "F", {}});
+    auto board = build(s, model);
+    Recorder<double> rec;
+    board->setObserver(&rec);
+    board->scheduleInput(0.15, 32, KeyDirection::Down);
+    const GizmoId F = *board->find("F"), B = *board->find("B");
+    for (int k = 1; k <= 6; ++k) board->tick(0.05);  // to 0.3 s: the swing and its stop
+    EXPECT_EQ(firstCollisionWith(rec, F, B), nullptr) << motionModelName(model);
+    const auto& ball = board->ballById(B);
+    EXPECT_EQ(ball.positionAt(board->now()), Vec2<double>(6.25, 14.25)) << motionModelName(model);
+    EXPECT_EQ(ball.velocityAt(board->now()), Vec2<double>()) << motionModelName(model);
+  }
+}
+
 // A ball at rest exactly where a swinging flipper's final position touches it is struck as the
 // swing ends, whenever the flipper's collisions are predicted during the swing: the gap reaches
 // zero at the swing's last instant, and rounding may leave it a hair above zero there (fuzz

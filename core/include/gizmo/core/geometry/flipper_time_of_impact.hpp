@@ -177,8 +177,14 @@ std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, cons
     // ball on the pivot's circle is met by the side where its end comes under the ball
     // (sideEndComesUnder below), and there `along` is zero only to within rounding. The tip end
     // needs no such rule: the tip's circle moves with the side, and its own gap closes.
+    // But a side whose end is leaving the ball (along falling: (q·u)' = q'·u + ω q·u⊥ < 0) is not
+    // under it: the ball stays on the pivot's circle, which turns in place, and the side's bend
+    // (its line turning into the ball) never reaches it. Counted, it struck a still ball off the
+    // pivot at the minimum bounce as the flipper swung away (campaign seed 173205080, case 272).
     const Real behindPivot = positionResolution(ball.p);
-    touch.alongAxis = -behindPivot <= along && along <= axis.length && Real(0) <= across;
+    const bool endLeaving =
+        along < behindPivot && Real(dot(ball.v, u) + axis.omega * dot(q, Vec2<Real>(-u.y, u.x))) < Real(0);
+    touch.alongAxis = -behindPivot <= along && along <= axis.length && Real(0) <= across && !endLeaving;
   } else if (feature == 3) {
     const Vec2<Real> e = ball.p - (axis.pivot + axis.length * u);
     const Real distance = length(e);
