@@ -382,5 +382,19 @@ TEST(FuzzRegressions, ABallOnAFlippersPivotIsLeftAloneWhenTheSidesEndTurnsAway) 
   expectModelsAgree(ballisticRun(board, 0.05, 0.019603276181580084));
 }
 
+// Campaign seed 667430151, case 701, shrunk: B152 rests on a circle bumper's top, level with the
+// top of the square beside it. B89 strikes it at 5000 L/s a hair low, so it leaves along the
+// square's top rising at 1.25e-3 L/s, and gravity brings it back to the top's line 9.4e-14 L
+// beyond the square's corner. The corner passed it as a graze, and over the square the gap was
+// already below zero, so no entry was ever found: it sank 9.4e-8 L into the square in 5e-5 s.
+TEST(FuzzRegressions, ABallComingDownOntoASquaresTopOverItsCornerIsHit) {
+  BoardSpec board = test::emptyBoard(25, 0, 0);
+  board.balls.push_back(ballAt("B89", 19.5, 16.75, -5000, 0));
+  board.balls.push_back(ballAt("B152", 18.5, 16.75));
+  board.gizmos.push_back(gizmoAt(GizmoType::Square, "G7", 17, 17, 0));
+  board.gizmos.push_back(gizmoAt(GizmoType::Circle, "G16", 18, 17, 0));
+  expectInvariantsInBothModels(ballisticRun(board, 0.05, 0.005046761471183583));
+}
+
 }  // namespace
 }  // namespace gizmo::verify::fuzz

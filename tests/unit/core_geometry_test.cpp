@@ -170,6 +170,24 @@ TEST(TimeOfImpact, AnArcFromBehindAnEdgesLineLandsOnTheEdge) {
   EXPECT_FALSE(segmentTimeOfImpact(Trajectory<double>{{5.5, 5.5}, {0, -1}, {0, 25}}, 0.25, top, 1.0));
 }
 
+// A ball that comes down to an edge's line a hair beyond its end (where the end's vertex passes
+// it as a graze) and then moves over the edge, on its line or a rounding below it and closing,
+// is hit as it comes over the end: the gap's own entry lay beyond the end, and over the edge the
+// gap only falls (campaign seed 667430151, case 701: a ball sank into a square's top).
+TEST(TimeOfImpact, ABallComingOverAnEdgesEndOntoItsLineIsHitThere) {
+  const SegmentFeature<double> top = makeSegment(Vec2<double>(5, 5), Vec2<double>(6, 5));  // normal (0,−1)
+  auto path = [](double below, double vy) { return Trajectory<double>{{6.001, 4.75 + below}, {-1, vy}, {0, 0}}; };
+  const auto tau = segmentTimeOfImpact(path(1e-13, 1e-9), 0.25, top, 1.0);
+  ASSERT_TRUE(tau);
+  EXPECT_NEAR(*tau, 1e-3, 1e-15);
+  // Deeper than a graze of the vertex lets it be: the vertex's business, not the edge's.
+  EXPECT_FALSE(segmentTimeOfImpact(path(1e-6, 1e-9), 0.25, top, 1.0));
+  // On the line and moving along it (a ball sliding on a collinear neighbour): it meets the edge
+  // when its contact ends, not here; and one opening away from the line meets nothing.
+  EXPECT_FALSE(segmentTimeOfImpact(path(0, 0), 0.25, top, 1.0));
+  EXPECT_FALSE(segmentTimeOfImpact(path(0, -1e-9), 0.25, top, 1.0));
+}
+
 // docs/physics.md, sliding ends: a ball closer to a segment's end than the position resolution
 // (4ε(|x| + |y|), 8.7e-15 L here) and moving out over it has left the segment: it cannot get any
 // nearer by moving, and hitting the edge again would begin a contact that ends at once, for ever.
