@@ -43,8 +43,8 @@ void counters(benchmark::State& state, std::uint64_t events, std::uint64_t bytes
   if (bytes) state.counters["bytes/event"] = double(bytes) / double(events);
 }
 
-void unrecorded(benchmark::State& state, const BoardSpec& board) {
-  const RunRequest r = request(board);
+void unrecorded(benchmark::State& state, const BoardSpec& board, double seconds = kBoardSeconds) {
+  const RunRequest r = request(board, seconds);
   std::uint64_t events = 0;
   for (auto _ : state) events += simulate<double>(r).total;
   counters(state, events, 0);
@@ -61,8 +61,9 @@ void recordedInMemory(benchmark::State& state, const BoardSpec& board) {
   counters(state, events, bytes);
 }
 
-void recordedToFile(benchmark::State& state, const BoardSpec& board, const char* name) {
-  const RunRequest r = request(board);
+void recordedToFile(benchmark::State& state, const BoardSpec& board, const char* name,
+                    double seconds = kBoardSeconds) {
+  const RunRequest r = request(board, seconds);
   const std::string path = logPath(name);
   std::uint64_t events = 0, bytes = 0;
   for (auto _ : state) {
@@ -155,6 +156,10 @@ void BM_SpecReplayed(benchmark::State& s) { replayed(s, specExample(), "spec-rep
 void BM_SpecReplayedEveryRecord(benchmark::State& s) {
   replayed(s, specExample(), "spec-replay-records", replay::ReplayMethod::Records);
 }
+// A whole game: over 600 s the spec example's ball rattles in the V of two circle bumpers, and
+// nearly every record is a collision with its ball's change (docs/performance.md, "Whole games").
+void BM_Spec600sUnrecorded(benchmark::State& s) { unrecorded(s, specExample(), 600); }
+void BM_Spec600sRecordedToFile(benchmark::State& s) { recordedToFile(s, specExample(), "spec-600s", 600); }
 void BM_CrowdedUnrecorded(benchmark::State& s) { unrecorded(s, crowdedBoard()); }
 void BM_CrowdedRecordedToFile(benchmark::State& s) { recordedToFile(s, crowdedBoard(), "crowded"); }
 void BM_CrowdedReplayed(benchmark::State& s) { replayed(s, crowdedBoard(), "crowded-replay"); }
@@ -190,6 +195,8 @@ GIZMO_REPLAY_BENCHMARK(BM_SpecRecordedInMemory);
 GIZMO_REPLAY_BENCHMARK(BM_SpecRecordedToFile);
 GIZMO_REPLAY_BENCHMARK(BM_SpecReplayed);
 GIZMO_REPLAY_BENCHMARK(BM_SpecReplayedEveryRecord);
+GIZMO_REPLAY_BENCHMARK(BM_Spec600sUnrecorded)->Iterations(1);
+GIZMO_REPLAY_BENCHMARK(BM_Spec600sRecordedToFile)->Iterations(1);
 GIZMO_REPLAY_BENCHMARK(BM_CrowdedUnrecorded);
 GIZMO_REPLAY_BENCHMARK(BM_CrowdedRecordedToFile);
 GIZMO_REPLAY_BENCHMARK(BM_CrowdedReplayed);
