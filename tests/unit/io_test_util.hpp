@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gizmo/core/board_spec.hpp"
+#include "gizmo/io/board_file.hpp"
 #include "gizmo/io/diagnostics.hpp"
 
 // CMake defines the fixtures folder; a build by hand from the repository root finds it here.
@@ -110,6 +111,24 @@ inline std::vector<std::filesystem::path> boardFilesIn(const std::filesystem::pa
 
 inline std::filesystem::path expectedFor(const std::filesystem::path& board) {
   return board.parent_path() / (board.stem().string() + ".expected");
+}
+
+// A fixture board (text or XML) against its .expected file: the warnings it loads with, or the
+// errors that refuse it. A file whose first expected line is a warning must load.
+inline void checkAgainstExpected(const std::filesystem::path& board) {
+  SCOPED_TRACE(board.filename().string());
+  const std::vector<std::string> expected = lines(readFile(expectedFor(board)));
+  ASSERT_FALSE(expected.empty());
+  std::vector<std::string> got;
+  bool loaded = false;
+  try {
+    got = formatted(readBoardString(readFile(board), board.filename().string()).warnings);
+    loaded = true;
+  } catch (const InputError& e) {
+    got = formatted(e.diagnostics());
+  }
+  EXPECT_EQ(got, expected);
+  EXPECT_EQ(loaded, expected.front().find(": warning: ") != std::string::npos);
 }
 
 }  // namespace gizmo::io::test

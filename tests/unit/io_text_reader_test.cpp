@@ -577,24 +577,6 @@ TEST(TextReaderLenient, ByteOrderMarkDoesNotShiftColumns) {
 // ---------------------------------------------------------------------------------------------
 // Fixtures.
 
-void checkAgainstExpected(const std::filesystem::path& board) {
-  SCOPED_TRACE(board.filename().string());
-  const std::vector<std::string> expected = lines(readFile(expectedFor(board)));
-  ASSERT_FALSE(expected.empty());
-  const std::string content = readFile(board);
-  const std::string name = board.filename().string();
-  std::vector<std::string> got;
-  bool loaded = false;
-  try {
-    got = formatted(readBoardString(content, name).warnings);
-    loaded = true;
-  } catch (const InputError& e) {
-    got = formatted(e.diagnostics());
-  }
-  EXPECT_EQ(got, expected);
-  EXPECT_EQ(loaded, expected.front().find(": warning: ") != std::string::npos);
-}
-
 TEST(TextFixtures, MalformedFilesGiveTheirExpectedErrors) {
   int n = 0;
   for (const auto& f : boardFilesIn(fixturesDir() / "boards" / "malformed"))

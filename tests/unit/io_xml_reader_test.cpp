@@ -244,19 +244,6 @@ TEST(XmlReaderLenient, ByteOrderMarkDoesNotShiftColumns) {
 // ---------------------------------------------------------------------------------------------
 // Fixtures.
 
-void checkAgainstExpected(const std::filesystem::path& file) {
-  SCOPED_TRACE(file.filename().string());
-  const std::vector<std::string> expected = lines(readFile(expectedFor(file)));
-  ASSERT_FALSE(expected.empty());
-  std::vector<std::string> got;
-  try {
-    got = formatted(readBoardString(readFile(file), file.filename().string()).warnings);
-  } catch (const InputError& e) {
-    got = formatted(e.diagnostics());
-  }
-  EXPECT_EQ(got, expected);
-}
-
 TEST(XmlFixtures, MalformedFilesGiveTheirExpectedErrors) {
   int n = 0;
   for (const auto& f : boardFilesIn(fixturesDir() / "boards" / "malformed"))

@@ -13,16 +13,13 @@
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/verify/certify.hpp"
 #include "gizmo/verify/certify_ladder.hpp"
+#include "support/certify_report_text.hpp"
 #include "support/fixture_request.hpp"
 
 namespace gizmo::verify {
 namespace {
 
-std::string describe(const CertifyReport& r) {
-  std::ostringstream out;
-  printCertifyReport(out, r);
-  return out.str();
-}
+using test::describe;
 
 std::uint64_t uncertifiedCount(const CertifyReport& r) {
   std::uint64_t n = 0;

@@ -13,6 +13,7 @@
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/io/board_file.hpp"
+#include "support/certify_report_text.hpp"
 #include "support/fixture_request.hpp"
 #include "gizmo/verify/certify.hpp"
 #include "gizmo/verify/certify_exact.hpp"
@@ -25,11 +26,7 @@ RunRequest requestFor(const std::string& board, MotionModel model, double second
   return test::fixtureRequest(board, model, seconds);
 }
 
-std::string describe(const CertifyReport& r) {
-  std::ostringstream out;
-  printCertifyReport(out, r);
-  return out.str();
-}
+using test::describe;
 
 // Every decision is accounted for: certified, a tie, wrong, or uncertified with a reason.
 void expectAccounted(const CertifyReport& r) {
