@@ -396,5 +396,51 @@ TEST(FuzzRegressions, ABallComingDownOntoASquaresTopOverItsCornerIsHit) {
   expectInvariantsInBothModels(ballisticRun(board, 0.05, 0.005046761471183583));
 }
 
+// Campaign seed 662607015, case 1669, shrunk: in the classic model B19 strikes a right
+// flipper's pivot end at 5000 L/s and friction stops it dead there, 2.7e-14 L inside the pivot's
+// circle (twice its position resolution). A key swings the flipper's side round under it; the
+// search for the instant the side's end comes under a ball on the pivot's circle looked only at
+// balls within a rounding of the circle's rim, from either side, so the side passed 1.6e-4 L
+// into the ball.
+TEST(FuzzRegressions, ABallAHairInsideAFlippersPivotIsHitWhenTheSidesEndComesUnderIt) {
+  BoardSpec board = test::emptyBoard(0, 0.32557735978893937, 0.36190872924522294);
+  board.balls.push_back(ballAt("B8", 7.5, 14.699297629849012, 2659.336249560063, -4234.13872136658));
+  board.balls.push_back(ballAt("B19", 14.206837008927563, 13.870351218286917, -4993.089146662549, -262.7941656138184));
+  board.gizmos.push_back(gizmoAt(GizmoType::Absorber, "G6", 7, 12, 0, 12, 1));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G17", 1, 12, 90));
+  board.keyConnections.push_back(KeyConnectSpec{37, KeyDirection::Up, "G17", {}});
+  RunRequest run = ballisticRun(board, 0.05, 0.3416020398479544);
+  run.keys.push_back(TimedKey{0.3170584042273716, 37, KeyDirection::Up});
+  expectInvariantsInBothModels(run);
+}
+
+// Campaign seed 662607015, case 1906, shrunk: B38 bounces on a square's top, 0.02 L/s up and
+// down, against a flipper's pivot beside it, and drifts into the pivot at 3e-7 L/s: a closing
+// speed under the graze fraction of its speed, so each path, started again at the tangency by
+// the bounce, passed the pivot as a graze. The dips added up, to 1.04e-9 L in.
+TEST(FuzzRegressions, ABallBouncingBesideAFlippersPivotDoesNotGrazeItsWayIn) {
+  BoardSpec board = test::emptyBoard(25, 5, 5);
+  board.balls.push_back(ballAt("B9", 11.846463841820427, 5.75, 3739.11919445836, 3319.4860520317097));
+  board.balls.push_back(ballAt("B19", 12.5, 6.25, 24.652593677325953, 0));
+  board.balls.push_back(ballAt("B20", 9.5, 6.159636876116034, 0.004942245444971615, 0.0032427381180446164));
+  board.balls.push_back(ballAt("B21", 12.5, 6.75, 0.003450293489973688, -0.0052749019757251814));
+  board.balls.push_back(ballAt("B27", 15.164884556690218, 4.4944690777694385, 3749.70539722663, -3307.52315698764));
+  board.balls.push_back(ballAt("B34", 16, 3, -34, 34));
+  board.balls.push_back(ballAt("B38", 13.365164731948775, 5.75));
+  board.balls.push_back(ballAt("B52", 11.25, 3.25));
+  board.balls.push_back(ballAt("B53", 13.25, 4.25));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G2", 9, 3, 0));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G3", 2, 0, 90));
+  board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G5", 14, 4, 270));
+  board.gizmos.push_back(gizmoAt(GizmoType::Square, "G13", 13, 6, 0));
+  board.gizmos.push_back(gizmoAt(GizmoType::Teleporter, "G15", 4, 4, 180));
+  board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G17", 11, 4, 180));
+  board.connections.push_back(ConnectSpec{"G15", "G15", {}});
+  board.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, "G17", {}});
+  RunRequest run = ballisticRun(board, 0.1, 1.9618098021285861);
+  run.keys.push_back(TimedKey{0.35000000000000003, 32, KeyDirection::Down});
+  expectInvariantsInBothModels(run);
+}
+
 }  // namespace
 }  // namespace gizmo::verify::fuzz

@@ -270,11 +270,13 @@ std::optional<SwingContact<Real>> sideEndComesUnder(const Trajectory<Real>& ball
                                                     const SwingingAxis<Real>& axis, const Real& limit,
                                                     Touching&& touching) {
   // Only a ball that can be on the pivot's circle in the time: its distance from the pivot
-  // within its travel (and a rounding) of the reach.
+  // within its travel (and a rounding) of the reach, or less. (A ball a few roundings inside the
+  // circle is on it too: a still ball that a hit left 2.7e-14 L inside, twice its position
+  // resolution, was passed by the side in the classic model; campaign seed 662607015, case 1669.)
   const Real half = Real(1) / Real(2);
   const Real travel =
       length(ball.v) * limit + half * length(ball.a) * limit * limit + positionResolution(ball.p);
-  if (travel < absOf(Real(length(Vec2<Real>(ball.p - axis.pivot)) - (r + axis.radius)))) return std::nullopt;
+  if (travel < Real(length(Vec2<Real>(ball.p - axis.pivot)) - (r + axis.radius))) return std::nullopt;
   const SideGap<Real> behindEnd{ball, quarterTurned(axis), Real(0), Real(-1)};
   std::optional<int> feature;
   const std::optional<Real> tau = math::firstEntrySmooth(behindEnd, Real(0), limit, [&](const Real& at) {
