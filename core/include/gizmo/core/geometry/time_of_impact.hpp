@@ -202,8 +202,8 @@ std::optional<Real> circleTimeOfImpact(const Trajectory<Real>& t, const Real& r,
   const Real quarter = Real(1) / Real(4);
   const std::array<Real, 5> c{dist2 - reach * reach, Real(2) * dot(d, t.v), lengthSquared(t.v) + dot(d, t.a),
                               dot(t.v, t.a), quarter * lengthSquared(t.a)};
-  // A path that starts deeper in than a graze can leave it, r κ²/2 (c0 = −reach² κ² in the
-  // squared gap), is not let through again: grazes one after another, each from a path that
+  // A path that starts deeper in than a graze can leave it, (r + R) κ²/2 (c0 = −(r + R)² κ² in
+  // the squared gap), is not let through again: grazes one after another, each from a path that
   // another event (a bounce on the floor) started again at the tangency, would add their dips.
   // A ball bouncing on a square beside a flipper's pivot, drifting into the pivot at 3e-7 L/s
   // against its 0.02 L/s, sank 1e-9 L into it (campaign seed 662607015, case 1906).
