@@ -207,7 +207,12 @@ std::optional<Real> circleTimeOfImpact(const Trajectory<Real>& t, const Real& r,
   // another event (a bounce on the floor) started again at the tangency, would add their dips.
   // A ball bouncing on a square beside a flipper's pivot, drifting into the pivot at 3e-7 L/s
   // against its 0.02 L/s, sank 1e-9 L into it (campaign seed 662607015, case 1906).
-  const bool deeperThanAGraze = c[0] < Real(-(reach * reach) * grazeFractionSquared<Real>());
+  // Closing beyond rounding only (|d·v| above 64 ε |d||v|): the response computes the closing
+  // again with its own roundings, and a pair it finds not closing would be predicted to hit at
+  // this instant for ever (a stall of two balls in a pile, seed 137035999, case 2822).
+  const Real eps = epsilonOf<Real>();
+  const bool deeperThanAGraze = c[0] < Real(-(reach * reach) * grazeFractionSquared<Real>()) && c[1] < Real(0) &&
+                                Real(Real(16384) * eps * eps * dist2 * lengthSquared(t.v)) < Real(c[1] * c[1]);
   return firstPolynomialEntry(c, limit, [&](const Real& tau) {
     if (afterNow && !(Real(0) < tau)) return false;
     return (tau == Real(0) && deeperThanAGraze) || !grazesAt(t, circle.centre, tau);
