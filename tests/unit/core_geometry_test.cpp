@@ -188,6 +188,19 @@ TEST(TimeOfImpact, ABallComingOverAnEdgesEndOntoItsLineIsHitThere) {
   EXPECT_FALSE(segmentTimeOfImpact(path(0, -1e-9), 0.25, top, 1.0));
 }
 
+// Two balls 1e-8 L into each other (deeper than a graze leaves them) whose closing is a rounding
+// (d·v = −1.8e-15, an ulp of 10, against |d||v| = 0.5) are not hit now: the response, computing
+// the closing with its own roundings, may find them opening and change nothing, and the same hit
+// would be predicted at that instant for ever (campaign seed 137035999, case 2822). Closing for
+// real, they are hit now, however slowly (case 1906).
+TEST(TimeOfImpact, APairDeeperThanAGrazeIsHitNowOnlyWhenItClosesBeyondRounding) {
+  const Trajectory<double> still{{10, 10}, {0, 0}, {0, 0}};
+  auto other = [](double vx) { return Trajectory<double>{{10.49999999, 10 + 2e-15}, {vx, -1}, {0, 0}}; };
+  const auto rounding = ballTimeOfImpact(other(0), still, 0.25, 0.01);
+  EXPECT_FALSE(rounding && *rounding == 0.0);
+  EXPECT_EQ(ballTimeOfImpact(other(-1e-6), still, 0.25, 0.01), std::optional<double>(0.0));
+}
+
 // docs/physics.md, sliding ends: a ball closer to a segment's end than the position resolution
 // (4ε(|x| + |y|), 8.7e-15 L here) and moving out over it has left the segment: it cannot get any
 // nearer by moving, and hitting the edge again would begin a contact that ends at once, for ever.
