@@ -272,6 +272,24 @@ TEST(FuzzRegressions, ABallPassingOverABallAtATangentStrikesItOnlyByRounding) {
   expectModelsAgree(run);
 }
 
+// Campaign seed 667430151, case 4778, shrunk: B3 and B5 run along y = 15.75, passing a still
+// flipper's tip exactly at a tangent. Each head-on hit between them, and B5's turn on the
+// triangle, turns a rounding into a vertical speed and amplifies it (to 1.3e-7 L/s in the
+// ballistic run, 6.3e-8 L/s in the classic run), so B3 dips 7.5e-11 L into the tip in one run,
+// past the graze's 5.8e-11 L, and is struck, and 3.7e-11 L in the other, and passes. At mpfr:256
+// the two models part there as well. Both are within the models' tolerances.
+TEST(FuzzRegressions, ABallPassingAStillFlippersTipAtATangentStrikesItOnlyByRounding) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B0", 2.5, 7.25, 5000, 0));
+  board.balls.push_back(ballAt("B3", 4.5, 15.75, -4214.316169320152, 0));
+  board.balls.push_back(ballAt("B5", 5.5, 15.75));
+  board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G0", 1, 16, 180));
+  board.gizmos.push_back(gizmoAt(GizmoType::Square, "G6", 5, 7, 90));
+  board.gizmos.push_back(gizmoAt(GizmoType::Triangle, "G14", 14, 15, 90));
+  RunRequest run = ballisticRun(board, 0.05, 0.02085358299550017);
+  expectModelsAgree(run);
+}
+
 // Campaign seed 271828182, case 1389, shrunk: a crowded board in which B41, struck by a flipper,
 // runs down an absorber's side at a tangent, 2.9e-14 L/s into it in the classic run, which
 // captures it, and exactly along it in the ballistic run.

@@ -84,4 +84,19 @@ inline std::optional<GizmoTouch> touchOnGizmo(const GizmoSpec& spec, const Vec2<
   return touch;
 }
 
+// Where a ball touches a flipper standing still with its axis from pivot to tip (the capsule of
+// that radius around it): round at either end's cap, an edge along its sides.
+inline std::optional<GizmoTouch> touchOnCapsule(const Vec2<double>& pivot, const Vec2<double>& tip, double radius,
+                                                const Vec2<double>& p) {
+  const Vec2<double> q = nearestPointOnSegment(p, pivot, tip);
+  const Vec2<double> d = p - q;
+  const double len = length(d);
+  if (!(len > 0)) return std::nullopt;
+  GizmoTouch touch;
+  touch.normal = Vec2<double>(d.x / len, d.y / len);
+  touch.round = q == pivot || q == tip;
+  touch.radius = radius;
+  return touch;
+}
+
 }  // namespace gizmo::verify::fuzz
