@@ -31,6 +31,7 @@ class JammedBoard final : public BoardAccess<double> {
   bool jammed() const override { return true; }
   void releaseContactsOn(GizmoId) override {}
   bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return true; }
+  bool cradled(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
 
   static std::array<Ball<double>, 3> ballsWith(Vec2<double> bVelocity) {
     return {Ball<double>("A", {10, 10}, {0, 0}), Ball<double>("B", {10.5, 10}, bVelocity),

@@ -27,6 +27,7 @@ class DrivenBoardAccess final : public BoardAccess<double> {
   void releaseContactsOn(GizmoId) override {}
   // Box2D moves the bodies: a teleporter is a circle bumper here, and says where the runs part.
   bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return false; }
+  bool cradled(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
 
  private:
   PhysicsParams<double> params_;

@@ -126,6 +126,7 @@ class GameBoard final : private BoardAccess<Real> {
   }
   void releaseContactsOn(GizmoId g) override;
   bool roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const override;
+  bool cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const override;
   bool jammed() const override { return collisionsInWindow_ > kJamThreshold; }
 
   void rebuild();

@@ -7,6 +7,7 @@
 
 #include "gizmo/core/board/game_board.hpp"
 #include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/core/geometry/cradle.hpp"
 #include "gizmo/core/gizmos/outer_walls.hpp"
 
 namespace gizmo {
@@ -159,6 +160,32 @@ bool GameBoard<Real>::roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ign
     if (box.lo.x < o.hi.x && o.lo.x < box.hi.x && box.lo.y < o.hi.y && o.lo.y < box.hi.y) return false;
   }
   return true;
+}
+
+// The other surface is looked for among the gizmos listed in the cells around the ball, and the
+// walls (listed in none). Within a minimum bounce's rise, restSpeed²/(2|g|): the farthest the
+// bounce that the rule replaces would lift the ball off the surface it struck.
+template <class Real>
+bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const {
+  if (params_.gravity == Real(0) || !isGizmoId(by) || !gizmos_[std::size_t(by)]->restingShape()) return false;
+  const Vec2<Real> gravity(Real(0), params_.gravity);
+  const Real r = Ball<Real>::radius();
+  const Real rise = params_.restSpeed * params_.restSpeed / (Real(2) * absOf(params_.gravity));
+  auto holds = [&](GizmoId other) {
+    if (other == by || other == ball) return false;
+    const Shape<Real>* shape = gizmos_[std::size_t(other)]->restingShape();
+    return shape && anyFeatureWithin(*shape, p, r, rise, [&](const Vec2<Real>& towardsBall) {
+             return gravityHeldBetween(towardsBall, normal, gravity);
+           });
+  };
+  if (holds(outerWallsId())) return true;
+  const Real reach = r + rise;
+  const CellRange c = cellsOf(Box<Real>{p - Vec2<Real>(reach, reach), p + Vec2<Real>(reach, reach)});
+  for (int y = c.y0; y <= c.y1; ++y)
+    for (int x = c.x0; x <= c.x1; ++x)
+      for (GizmoId g : grid_[std::size_t(y * kBoardSize + x)])
+        if (holds(g)) return true;
+  return false;
 }
 
 template <class Real>

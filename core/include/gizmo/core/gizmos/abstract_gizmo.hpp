@@ -12,6 +12,7 @@
 #include "gizmo/core/board/model_rule.hpp"
 #include "gizmo/core/board/physics_params.hpp"
 #include "gizmo/core/board_spec.hpp"
+#include "gizmo/core/geometry/features.hpp"
 #include "gizmo/core/geometry/trajectory.hpp"
 #include "gizmo/core/gizmos/property.hpp"
 
@@ -50,6 +51,10 @@ class BoardAccess {
   // Whether ball `ball` could be put with its centre at p now: inside the walls, clear of every
   // free ball and of the box of every gizmo but `ignore` (boxes, not shapes: a cautious answer).
   virtual bool roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const = 0;
+  // Whether a ball centred at p, struck slowly by gizmo `by` along `normal`, lies in a V: `by`
+  // and another gizmo are still surfaces it can rest against, the other within a minimum
+  // bounce's rise of it, and gravity is held between the two (geometry/cradle.hpp).
+  virtual bool cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const = 0;
 };
 
 template <class Real>
@@ -101,6 +106,11 @@ class AbstractGizmo {
   // restoreState reads back what saveState wrote and checks the ids it finds.
   virtual void saveState(GizmoState<Real>& /*out*/) const {}
   virtual void restoreState(GizmoStateReader<Real>& /*in*/, const GizmoIdCheck& /*ids*/) {}
+
+  // The surface a ball can lie against now, for the rules that bring a ball to rest in a V: a
+  // still shape that only reflects. None for a gizmo that moves, captures, boosts or sends the
+  // ball elsewhere, and for a ball.
+  virtual const Shape<Real>* restingShape() const { return nullptr; }
 
   // Everything the gizmo can ever touch, for the broad phase.
   virtual Box<Real> bounds() const = 0;

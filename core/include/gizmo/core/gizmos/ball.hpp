@@ -234,6 +234,13 @@ class Ball final : public AbstractGizmo<Real> {
         comeToRest(board, kNoGizmo);
         return true;
       }
+      if (surfaceBend == Real(0) && u == Vec2<Real>() && board.cradled(this->id(), p, n, by)) {
+        // In a V of two still surfaces that hold it against gravity (two circle bumpers): the
+        // minimum bounce would rattle it between them for as long as the run lasts, giving back
+        // most of what friction takes, where friction alone brings it to rest in the V.
+        comeToRest(board, by);
+        return true;
+      }
       if (jammed) {
         // Pressed slowly onto something round with no room to bounce: it rests there.
         comeToRest(board, by);

@@ -199,6 +199,7 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
   }
 
   const Shape<Real>& stillShape() const { return stillShape_; }
+  const Shape<Real>* restingShape() const override { return swinging() ? nullptr : &stillShape_; }
 
   void saveState(GizmoState<Real>& out) const override {
     out.reals.insert(out.reals.end(), {t0_, s0_});

@@ -8,6 +8,7 @@ template <class Real>
 class OuterWalls final : public AbstractGizmoWithPolygonalGeometry<Real> {
  public:
   OuterWalls() : AbstractGizmoWithPolygonalGeometry<Real>(kOuterWallsName, outerWallsShape<Real>(), Real(1)) {}
+  const Shape<Real>* restingShape() const override { return &this->shape(); }
   GizmoKind kind() const override { return GizmoKind::OuterWalls; }
   GizmoSpec spec() const override { return GizmoSpec{}; }
   std::vector<std::string> propertyNames() const override { return {property::kName}; }

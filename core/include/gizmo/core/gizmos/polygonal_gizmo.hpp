@@ -72,6 +72,11 @@ class GridBumper : public GridPlaced<AbstractGizmoWithPolygonalGeometry<Real>> {
     return Vec2<Real>(Real(s.x) + Real(s.width) / two, Real(s.y) + Real(s.height) / two);
   }
 
+  const Shape<Real>* restingShape() const override {
+    const GizmoKind k = kind();
+    return k == GizmoKind::Square || k == GizmoKind::Circle || k == GizmoKind::Triangle ? &this->shape() : nullptr;
+  }
+
   GizmoKind kind() const override {
     switch (this->placement().type) {
       case GizmoType::Square: return GizmoKind::Square;
