@@ -94,5 +94,30 @@ TEST(Cradle, OneCircleAloneIsNoV) {
   EXPECT_GT(board->ballById(*board->find("B")).positionAt(board->now()).y, 11.0);
 }
 
+// A ball that slides down a triangle's slope into a still flipper's side rests in that V
+// (`Wedged`: the two-segment rule). When the flipper swings away, nothing holds the ball up any
+// more: it wakes and slides on down the slope. Before, it hung in the air where it had rested.
+// Ballistic only: in the classic model the ball, dropped onto the slope, bounces out of the V.
+TEST(Cradle, ABallRestingAgainstAFlipperWakesWhenTheFlipperSwingsAway) {
+  for (const MotionModel model : {MotionModel::Ballistic}) {
+    BoardSpec s = emptyBoard(25, 0.5, 0.5);
+    s.gizmos.push_back(gizmoAt(GizmoType::Triangle, "T", 6, 12, 180));  // slope from (7, 12) down to (6, 13)
+    s.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "F", 4, 11));   // its side at x = 6 while still
+    s.balls.push_back(ballAt("B", 6.3, 12.2));
+    s.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, "F", {}});
+    auto board = build(s, model);
+    board->tick(19.0);
+    const Ball<double>& ball = board->ballById(*board->find("B"));
+    ASSERT_TRUE(ball.wedged()) << motionModelName(model);
+    const Vec2<double> rest = ball.positionAt(board->now());
+    EXPECT_NEAR(rest.x, 6.25, 1e-9) << motionModelName(model);
+    board->scheduleInput(20.0, 32, KeyDirection::Down);
+    board->tick(1.05);
+    EXPECT_FALSE(ball.wedged()) << motionModelName(model);
+    board->tick(1.0);
+    EXPECT_GT(ball.positionAt(board->now()).y, rest.y + 0.5) << motionModelName(model);
+  }
+}
+
 }  // namespace
 }  // namespace gizmo

@@ -432,12 +432,25 @@ void GameBoard<Real>::schedule(EventKind kind, const Real& time, GizmoId a, Gizm
 
 template <class Real>
 void GameBoard<Real>::releaseContactsOn(GizmoId g) {
+  // "Beside": the ball's box within the broad phase's margin of g's box. A wedged ball rests
+  // against a second surface besides the one it slides on or was struck by, and that surface
+  // may be g: a ball sliding down a triangle's slope into a still flipper's side rests there,
+  // and hung in the air after the flipper swung away (found on a cradle rule's board).
+  const Box<Real> held = gizmos_[static_cast<std::size_t>(g)]->bounds();
+  const Real reach = Ball<Real>::radius() + fromDouble<Real>(detail::kBroadPhaseMargin);
   for (GizmoId id : balls_) {
     Ball<Real>& b = *gizmos_[static_cast<std::size_t>(id)]->asBall();
-    if (!b.contact() || b.contact()->gizmo != g) continue;
     const Vec2<Real> p = b.positionAt(now_), v = b.velocityAt(now_);
-    b.leaveContact(*this);
-    b.setState(now_, p, v, params_);
+    if (b.contact() && b.contact()->gizmo == g) {
+      b.leaveContact(*this);
+      b.setState(now_, p, v, params_);
+      recompute_.push_back(id);
+      continue;
+    }
+    if (!b.wedged() || b.captured()) continue;
+    if (p.x + reach < held.lo.x || held.hi.x < p.x - reach || p.y + reach < held.lo.y || held.hi.y < p.y - reach)
+      continue;
+    b.wake(*this, g);
     recompute_.push_back(id);
   }
 }

@@ -46,7 +46,8 @@ class BoardAccess {
   // Many hits at this one instant: balls are jammed between surfaces with no room to move, and
   // hits now leave no rebound along their normal.
   virtual bool jammed() const = 0;
-  // Every ball sliding on gizmo g leaves that contact (g is about to move).
+  // Gizmo g is about to move: every ball sliding on it leaves that contact, and every ball at
+  // rest (wedged) beside it wakes, since what g held up it may hold no more.
   virtual void releaseContactsOn(GizmoId g) = 0;
   // Whether ball `ball` could be put with its centre at p now: inside the walls, clear of every
   // free ball and of the box of every gizmo but `ignore` (boxes, not shapes: a cautious answer).

@@ -306,6 +306,15 @@ class Ball final : public AbstractGizmo<Real> {
     setState(board.now(), positionAt(board.now()), Vec2<Real>(), board.params());
   }
 
+  // At rest beside a gizmo that starts to move: it moves under gravity again, sliding on its
+  // contact if it has one (reported as the end of its rest against that gizmo).
+  void wake(BoardAccess<Real>& board, GizmoId by) {
+    if (!wedged_) return;
+    wedged_ = false;
+    board.reportRule(ModelRule::ContactEnd, this->id(), by);
+    setState(board.now(), positionAt(board.now()), velocityAt(board.now()), board.params());
+  }
+
   void leaveContact(BoardAccess<Real>& board) {
     if (!contact_) return;
     board.reportRule(ModelRule::ContactEnd, this->id(), contact_->gizmo);
