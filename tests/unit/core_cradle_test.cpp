@@ -56,6 +56,19 @@ TEST(Cradle, OnlyAFeatureWithinReachOnItsFreeSideCounts) {
   EXPECT_EQ(seen, Vec2<double>(0.75, 0));
 }
 
+// The ball of the next two tests, moving at 0.3 L/s beside circle C2 and, when `withC1`, in the
+// V it makes with C1, with strong friction; watched by `rec` for `seconds`.
+std::unique_ptr<GameBoard<double>> ballBesideCircles(bool withC1, Recorder<double>& rec, double seconds) {
+  BoardSpec s = emptyBoard(25, 0.5, 0.5);
+  if (withC1) s.gizmos.push_back(gizmoAt(GizmoType::Circle, "C1", 5, 10));
+  s.gizmos.push_back(gizmoAt(GizmoType::Circle, "C2", 6, 10));
+  s.balls.push_back(ballAt("B", 6.0, 9.93, 0.3, 0));
+  auto board = build(s, MotionModel::Ballistic);
+  board->setObserver(&rec);
+  board->tick(seconds);
+  return board;
+}
+
 // Two circle bumpers side by side make a V on top, where a ball touches both at W = (6, 10.5 −
 // √(0.75² − 0.5²)). A ball set moving in it is trapped (climbing out takes 3 L/s); friction takes
 // its bounces down to the minimum bounce, which would then rattle it between the circles for as
@@ -64,14 +77,8 @@ TEST(Cradle, OnlyAFeatureWithinReachOnItsFreeSideCounts) {
 // between the normals there. Ballistic only: the classic model's step gains up to ½g²dt² per
 // step and throws the ball out of so shallow a V (the seed's method; physics.md §6).
 TEST(Cradle, ABallRattlingInTheVOfTwoCirclesComesToRestThere) {
-  BoardSpec s = emptyBoard(25, 0.5, 0.5);
-  s.gizmos.push_back(gizmoAt(GizmoType::Circle, "C1", 5, 10));
-  s.gizmos.push_back(gizmoAt(GizmoType::Circle, "C2", 6, 10));
-  s.balls.push_back(ballAt("B", 6.0, 9.93, 0.3, 0));
-  auto board = build(s, MotionModel::Ballistic);
   Recorder<double> rec;
-  board->setObserver(&rec);
-  board->tick(60.0);
+  const auto board = ballBesideCircles(true, rec, 60.0);
   EXPECT_EQ(rec.countRule(ModelRule::Wedged), 1);
   const Ball<double>& ball = board->ballById(*board->find("B"));
   EXPECT_EQ(ball.velocityAt(board->now()), Vec2<double>());
@@ -83,13 +90,8 @@ TEST(Cradle, ABallRattlingInTheVOfTwoCirclesComesToRestThere) {
 // The same ball in the same place without the second circle: one round surface holds nothing,
 // and the ball rolls off it (no rule applies).
 TEST(Cradle, OneCircleAloneIsNoV) {
-  BoardSpec s = emptyBoard(25, 0.5, 0.5);
-  s.gizmos.push_back(gizmoAt(GizmoType::Circle, "C2", 6, 10));
-  s.balls.push_back(ballAt("B", 6.0, 9.93, 0.3, 0));
-  auto board = build(s, MotionModel::Ballistic);
   Recorder<double> rec;
-  board->setObserver(&rec);
-  board->tick(5.0);
+  const auto board = ballBesideCircles(false, rec, 5.0);
   EXPECT_EQ(rec.countRule(ModelRule::Wedged), 0);
   EXPECT_GT(board->ballById(*board->find("B")).positionAt(board->now()).y, 11.0);
 }
