@@ -149,7 +149,7 @@ template <class Real>
 bool GameBoard<Real>::roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const {
   const Real r = Ball<Real>::radius(), size(kBoardSize);
   if (p.x - r < Real(0) || size < p.x + r || p.y - r < Real(0) || size < p.y + r) return false;
-  const Box<Real> box{p - Vec2<Real>(r, r), p + Vec2<Real>(r, r)};
+  const Box<Real> box = Box<Real>::around(p, r);
   for (std::size_t g = 1; g < gizmos_.size(); ++g) {  // the walls (id 0) are checked above
     if (GizmoId(g) == ball || GizmoId(g) == ignore) continue;
     if (const Ball<Real>* other = gizmos_[g]->asBall()) {
@@ -179,8 +179,7 @@ bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real
            });
   };
   if (holds(outerWallsId())) return true;
-  const Real reach = r + rise;
-  const CellRange c = cellsOf(Box<Real>{p - Vec2<Real>(reach, reach), p + Vec2<Real>(reach, reach)});
+  const CellRange c = cellsOf(Box<Real>::around(p, r + rise));
   for (int y = c.y0; y <= c.y1; ++y)
     for (int x = c.x0; x <= c.x1; ++x)
       for (GizmoId g : grid_[std::size_t(y * kBoardSize + x)])
@@ -440,16 +439,14 @@ void GameBoard<Real>::releaseContactsOn(GizmoId g) {
   const Real reach = Ball<Real>::radius() + fromDouble<Real>(detail::kBroadPhaseMargin);
   for (GizmoId id : balls_) {
     Ball<Real>& b = *gizmos_[static_cast<std::size_t>(id)]->asBall();
-    const Vec2<Real> p = b.positionAt(now_), v = b.velocityAt(now_);
     if (b.contact() && b.contact()->gizmo == g) {
+      const Vec2<Real> p = b.positionAt(now_), v = b.velocityAt(now_);
       b.leaveContact(*this);
       b.setState(now_, p, v, params_);
       recompute_.push_back(id);
       continue;
     }
-    if (!b.wedged() || b.captured()) continue;
-    if (p.x + reach < held.lo.x || held.hi.x < p.x - reach || p.y + reach < held.lo.y || held.hi.y < p.y - reach)
-      continue;
+    if (!b.wedged() || b.captured() || !Box<Real>::around(b.positionAt(now_), reach).overlaps(held)) continue;
     b.wake(*this, g);
     recompute_.push_back(id);
   }

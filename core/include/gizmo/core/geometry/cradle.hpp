@@ -4,8 +4,6 @@
 // normals, so that every small displacement that keeps both gaps open raises the ball. Only
 // products and comparisons: no square root and no library call, so that every scalar, the exact
 // ones included, decides it the same way.
-#include <optional>
-
 #include "gizmo/core/geometry/features.hpp"
 
 namespace gizmo {

@@ -25,6 +25,8 @@ struct Box {
   bool overlaps(const Box& o) const {
     return (int(hi.x < o.lo.x) | int(o.hi.x < lo.x) | int(hi.y < o.lo.y) | int(o.hi.y < lo.y)) == 0;
   }
+  // The square of half-side r around c (a ball's box, or the reach around a ball's centre).
+  static Box around(const Vec2<Real>& c, const Real& r) { return Box{c - Vec2<Real>(r, r), c + Vec2<Real>(r, r)}; }
 };
 
 // The box that holds every point within `radius` of the path over [0, T], grown by `margin`.

@@ -371,7 +371,7 @@ class Ball final : public AbstractGizmo<Real> {
   // --- board plumbing --------------------------------------------------------------------------
   Box<Real> bounds() const override {
     const Real r = radius();
-    return Box<Real>{p0_ - Vec2<Real>(r, r), p0_ + Vec2<Real>(r, r)};
+    return Box<Real>::around(p0_, r);
   }
 
   GizmoSpec spec() const override { return GizmoSpec{}; }  // balls are BallSpec: see ballSpec()

@@ -54,6 +54,16 @@ struct GizmoTouch {
   double radius = 0;
 };
 
+// The touch with its unit normal from the nearest point `from` to the ball's centre p; none for
+// p on that point.
+inline std::optional<GizmoTouch> touchFrom(const Vec2<double>& from, const Vec2<double>& p, GizmoTouch touch) {
+  const Vec2<double> d = p - from;
+  const double len = length(d);
+  if (!(len > 0)) return std::nullopt;
+  touch.normal = Vec2<double>(d.x / len, d.y / len);
+  return touch;
+}
+
 inline std::optional<GizmoTouch> touchOnGizmo(const GizmoSpec& spec, const Vec2<double>& p) {
   const Shape<double> shape = restShape<double>(spec);
   GizmoTouch touch;
@@ -77,11 +87,7 @@ inline std::optional<GizmoTouch> touchOnGizmo(const GizmoSpec& spec, const Vec2<
       }
     }
   }
-  const Vec2<double> d = p - from;
-  const double len = length(d);
-  if (!(len > 0)) return std::nullopt;
-  touch.normal = Vec2<double>(d.x / len, d.y / len);
-  return touch;
+  return touchFrom(from, p, touch);
 }
 
 // Where a ball touches a flipper standing still with its axis from pivot to tip (the capsule of
@@ -89,14 +95,7 @@ inline std::optional<GizmoTouch> touchOnGizmo(const GizmoSpec& spec, const Vec2<
 inline std::optional<GizmoTouch> touchOnCapsule(const Vec2<double>& pivot, const Vec2<double>& tip, double radius,
                                                 const Vec2<double>& p) {
   const Vec2<double> q = nearestPointOnSegment(p, pivot, tip);
-  const Vec2<double> d = p - q;
-  const double len = length(d);
-  if (!(len > 0)) return std::nullopt;
-  GizmoTouch touch;
-  touch.normal = Vec2<double>(d.x / len, d.y / len);
-  touch.round = q == pivot || q == tip;
-  touch.radius = radius;
-  return touch;
+  return touchFrom(q, p, GizmoTouch{Vec2<double>(), q == pivot || q == tip, radius});
 }
 
 }  // namespace gizmo::verify::fuzz
