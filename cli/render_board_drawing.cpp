@@ -17,6 +17,7 @@ const char* drawingTypeName(GizmoType type) {
     case GizmoType::Teleporter: return "teleporter";
     case GizmoType::Sink: return "sink";
     case GizmoType::Portal: return "portal";
+    case GizmoType::Spinner: return "spinner";
   }
   return "square";
 }
@@ -46,6 +47,11 @@ BoardDrawing drawingOf(const BoardSpec& board) {
     } else if (isDiscGizmo(g.type)) {
       d.centre = shape.circles.front().centre;
       d.radius = shape.circles.front().radius;
+    } else if (g.type == GizmoType::Spinner) {
+      d.centre = Vec2<double>(g.x + 1, g.y + 1);
+      d.length = kSpinnerArmLength;
+      d.radius = kSpinnerArmRadius;
+      d.rate = kSpinnerTurnRate;
     } else {
       // A polygon's vertices are its zero-radius corner circles, in the order of its edges.
       for (const CircleFeature<double>& corner : shape.circles) d.polygon.push_back(corner.centre);
@@ -69,6 +75,11 @@ nlohmann::ordered_json drawingJson(const BoardDrawing& drawing) {
     } else if (isDiscGizmo(d.type)) {
       g["centre"] = point(d.centre);
       g["radius"] = d.radius;
+    } else if (d.type == GizmoType::Spinner) {
+      g["centre"] = point(d.centre);
+      g["length"] = d.length;
+      g["radius"] = d.radius;
+      g["rate"] = d.rate;
     } else {
       nlohmann::ordered_json polygon = nlohmann::ordered_json::array();
       for (const Vec2<double>& p : d.polygon) polygon.push_back(point(p));

@@ -15,7 +15,7 @@ struct GizmoDrawing {
   std::string name;
   GizmoType type = GizmoType::Square;
   std::vector<Vec2<double>> polygon;  // squares, triangles, absorbers: vertices clockwise on screen
-  Vec2<double> centre;                // circles: centre and radius
+  Vec2<double> centre;                // circles: centre and radius; spinners: centre, arm length and radius
   double radius = 0;
   // Flippers: the pivot centre, the bar's direction at rest and at the end of the forward swing
   // (quarter turns θ = q·π/2 from +x toward +y), the sign of ω on the forward swing, the bar's
@@ -23,6 +23,7 @@ struct GizmoDrawing {
   Vec2<double> pivot;
   int restQuarter = 0, endQuarter = 0, forwardSign = 0;
   double length = 0;
+  double rate = 0;  // spinners: the turning rate, rad/s
 };
 
 struct BoardDrawing {

@@ -1,9 +1,11 @@
 // One log read into the arrays the pictures and the player draw from (see render_run_track.hpp).
 #include "render_run_track.hpp"
 
+#include <cmath>
 #include <memory>
 #include <optional>
 
+#include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/sink.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
@@ -43,6 +45,9 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     track.balls.push_back(BallTrack{id, ball.name(), {}});
   }
   std::map<GizmoId, FlipperSwings> flippers;
+  // A spinner's turning as the player draws it: the seconds it has turned (its angle over its rate,
+  // within a quarter turn, as the cross looks the same a quarter on), anchored at each action.
+  std::map<GizmoId, std::vector<SwingAnchor>> spinners;
   std::map<GizmoId, Vec2<double>> hold;
   const std::vector<GizmoSpec>& specs = log.request.board.gizmos;
   for (std::size_t i = 0; i < specs.size(); ++i) {
@@ -50,6 +55,7 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     if (id >= static_cast<GizmoId>(log.gizmoNames.size()) || log.gizmoNames[std::size_t(id)] != specs[i].name)
       throw std::runtime_error("the log's gizmo names do not follow its board");
     if (specs[i].type == GizmoType::LeftFlipper || specs[i].type == GizmoType::RightFlipper) flippers[id];
+    if (specs[i].type == GizmoType::Spinner) spinners[id] = {SwingAnchor{-1, 0, 0, 0}};
     if (specs[i].type == GizmoType::Absorber) hold[id] = Absorber<double>(specs[i]).holdPosition();
     if (specs[i].type == GizmoType::Sink) hold[id] = Sink<double>(specs[i]).centre();
   }
@@ -96,6 +102,12 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
       }
       case replay::DecisionType::Action:
         if (flippers.count(d->gizmo)) flippers[d->gizmo].action(event, now);
+        if (const auto it = spinners.find(d->gizmo); it != spinners.end()) {
+          const SwingAnchor last = it->second.back();
+          const double quarter = std::acos(-1.0) / 2 / kSpinnerTurnRate;
+          const double turned = std::fmod(last.s0 + last.direction * (now - last.t0), quarter);
+          it->second.push_back(SwingAnchor{event, now, turned, last.direction == 0 ? 1 : 0});
+        }
         note(*d, d->gizmo, -1);
         break;
       case replay::DecisionType::Trigger: note(*d, d->gizmo, d->other); break;
@@ -136,6 +148,7 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     track.balls[i].pieces = builders[i].finish(track.endTime, velocity);
   }
   for (auto& [id, swings] : flippers) track.flippers[id] = swings.visibleAnchors(tolerance, track.endTime);
+  for (auto& [id, anchors] : spinners) track.flippers[id] = anchors;  // drawn from the same anchors
   return track;
 }
 

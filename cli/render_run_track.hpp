@@ -42,6 +42,8 @@ struct RunTrack {
   std::vector<std::uint8_t> eventKind;
   std::vector<std::int32_t> eventA, eventB, eventFeature;
   std::vector<BallTrack> balls;
+  // Each flipper's swing anchors, and each spinner's (the seconds it has turned, direction 1 while
+  // it turns: the player draws it at that times its rate).
   std::map<GizmoId, std::vector<SwingAnchor>> flippers;
   std::vector<EventNote> notes;
   // Where each ball was at each collision (the log's own values), for pictures.

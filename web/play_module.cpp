@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/io/board_file.hpp"
 #include "gizmo/io/diagnostics.hpp"
@@ -183,8 +184,9 @@ EMSCRIPTEN_KEEPALIVE const double* gp_balls() {
   return numbers.data();
 }
 
-// Each gizmo's swing progress at the present, by gizmo id (0 for all but flippers): the page draws
-// a flipper at its angle from it, as the replay player does from a log.
+// Each gizmo's swing at the present, by gizmo id: a flipper's swing progress, the seconds a
+// spinner has turned (its angle over its rate; 0 for the others). The page draws them at their
+// angles from it, as the replay player does from a log.
 EMSCRIPTEN_KEEPALIVE const double* gp_swings() {
   numbers.clear();
   if (game) {
@@ -192,7 +194,10 @@ EMSCRIPTEN_KEEPALIVE const double* gp_swings() {
     for (std::size_t g = 0; g < game->board->gizmoCount(); ++g) {
       const auto& gizmo = game->board->gizmo(gizmo::GizmoId(g));
       const bool flipper = gizmo.kind() == gizmo::GizmoKind::LeftFlipper || gizmo.kind() == gizmo::GizmoKind::RightFlipper;
-      numbers.push_back(flipper ? static_cast<const gizmo::Flipper<double>&>(gizmo).progressAt(now) : 0.0);
+      if (flipper) numbers.push_back(static_cast<const gizmo::Flipper<double>&>(gizmo).progressAt(now));
+      else if (gizmo.kind() == gizmo::GizmoKind::Spinner)
+        numbers.push_back(static_cast<const gizmo::Spinner<double>&>(gizmo).angleAt(now) / gizmo::kSpinnerTurnRate);
+      else numbers.push_back(0.0);
     }
   }
   return numbers.data();

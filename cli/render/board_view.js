@@ -55,7 +55,8 @@ const BoardView = (function () {
     return g.rest_quarter * QUARTER + g.forward_sign * 6 * Math.PI * Math.min(SWING_TIME, Math.max(0, s));
   }
 
-  // One gizmo; a flipper at swing progress s.
+  // One gizmo; a flipper at swing progress s, a spinner turned for s seconds (arm 0 from +x toward
+  // +y at its rate).
   function drawGizmo(ctx, g, s) {
     if (g.type === "left-flipper" || g.type === "right-flipper") {
       const theta = flipperAngle(g, s);
@@ -70,6 +71,19 @@ const BoardView = (function () {
       ctx.beginPath();
       ctx.arc(g.pivot[0], g.pivot[1], 0.07, 0, 2 * Math.PI);
       ctx.fill();
+      return;
+    }
+    if (g.type === "spinner") {
+      ctx.strokeStyle = "#b388ff";
+      ctx.lineCap = "round";
+      ctx.lineWidth = 2 * g.radius;
+      ctx.beginPath();
+      for (const a of [g.rate * s, g.rate * s + QUARTER]) {
+        const dx = g.length * Math.cos(a), dy = g.length * Math.sin(a);
+        ctx.moveTo(g.centre[0] - dx, g.centre[1] - dy);
+        ctx.lineTo(g.centre[0] + dx, g.centre[1] + dy);
+      }
+      ctx.stroke();
       return;
     }
     ctx.fillStyle = GIZMO_FILL[g.type] || "#888";

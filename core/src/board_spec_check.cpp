@@ -38,6 +38,7 @@ const char* gizmoTypeWord(GizmoType type) {
     case GizmoType::Teleporter: return "teleporter";
     case GizmoType::Sink: return "sink";
     case GizmoType::Portal: return "portal";
+    case GizmoType::Spinner: return "spinner";
   }
   return "gizmo";
 }
@@ -180,15 +181,6 @@ std::vector<std::size_t> bySource(const std::vector<T>& v) {
 
 bool validOrientation(int o) { return o == 0 || o == 90 || o == 180 || o == 270; }
 
-std::pair<int, int> ownSize(GizmoType t) {
-  switch (t) {
-    case GizmoType::LeftFlipper:
-    case GizmoType::RightFlipper: return {2, 2};
-    case GizmoType::Absorber: return {0, 0};  // any size of at least 1×1
-    default: return {1, 1};
-  }
-}
-
 void checkNames(const BoardSpec& board, Collector& out) {
   struct Entry {
     SourcePos where;
@@ -254,7 +246,7 @@ void checkGeometry(const BoardSpec& board, Collector& out) {
       out.add(g.where, describe(g) + " has orientation " + std::to_string(g.orientation) +
                            ", but an absorber cannot be rotated");
     }
-    const auto [ownW, ownH] = ownSize(g.type);
+    const int ownW = ownSide(g.type), ownH = ownW;  // an absorber: any size of at least 1×1
     if (g.type == GizmoType::Absorber) {
       if (g.width < 1 || g.height < 1) {
         out.add(g.where, describe(g) + " is " + std::to_string(g.width) + " x " + std::to_string(g.height) +

@@ -43,8 +43,8 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
       s.connections.push_back(ConnectSpec{g.name, s.gizmos[std::size_t(whole(0, int(s.gizmos.size()) - 1))].name, {}});
   }
   // Half the triangles are boosters, half the circles teleporters (each with an exit), a quarter of
-  // the squares sinks and a third of the teleporters portals (an exit cell anywhere), chosen by a
-  // stream of their own so that the other draws
+  // the squares sinks, a third of the teleporters portals (an exit cell anywhere) and a third of
+  // the flippers spinners, chosen by a stream of their own so that the other draws
   // stay as they were before the additions (docs/physics.md, "Gizmos other programs added").
   std::mt19937_64 own(seed ^ 0x6164646974696f6eULL);
   for (GizmoSpec& g : s.gizmos)
@@ -68,6 +68,9 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
       g.exitX = int(own() % kBoardSize);
       g.exitY = int(own() % kBoardSize);
     }
+  for (GizmoSpec& g : s.gizmos)
+    if ((g.type == GizmoType::LeftFlipper || g.type == GizmoType::RightFlipper) && own() % 3 == 0)
+      g.type = GizmoType::Spinner;
   const int balls = whole(1, 12);
   for (int i = 0; i < balls; ++i) {
     BallSpec b;

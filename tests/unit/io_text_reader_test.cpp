@@ -245,6 +245,43 @@ TEST(TextReader, SinksAsTheirProgramWritesThem) {
   EXPECT_EQ(back.board.connections.size(), 1u);
 }
 
+// As NiklavsM/Gizmoball writes it (GameLoader.java: Spinner NAME X Y, a 2×2 cross), read without a
+// warning; written back as the same line, and as <spinner> in XML.
+TEST(TextReader, SpinnersAsTheirProgramWritesThem) {
+  const ReadResult r = readTextBoard("Spinner SP1 7 12\nSquare S 1 1\nConnect S SP1\n", "b.txt");
+  EXPECT_TRUE(r.warnings.empty());
+  ASSERT_EQ(r.board.gizmos.size(), 2u);
+  const GizmoSpec& s = r.board.gizmos[0];
+  EXPECT_EQ(s.type, GizmoType::Spinner);
+  EXPECT_EQ(s.x, 7);
+  EXPECT_EQ(s.y, 12);
+  EXPECT_EQ(s.width, 2);
+  EXPECT_EQ(s.height, 2);
+  const std::string text = writeTextBoard(r.board);
+  EXPECT_NE(text.find("Spinner SP1 7 12\n"), std::string::npos) << text;
+  const std::string xml = writeXmlBoard(r.board);
+  EXPECT_NE(xml.find("<spinner name=\"SP1\" x=\"7\" y=\"12\"/>"), std::string::npos) << xml;
+  const ReadResult back = readXmlBoard(xml, "b.xml");
+  EXPECT_TRUE(back.warnings.empty());
+  ASSERT_EQ(back.board.gizmos.size(), 2u);
+  EXPECT_EQ(back.board.gizmos[0].type, GizmoType::Spinner);
+  EXPECT_EQ(back.board.gizmos[0].width, 2);
+  EXPECT_EQ(firstTextError("Spinner SP1 19 3"),
+            "b.txt:1:1: error: spinner 'SP1' is not inside the board: it covers x 19..21, y 3..5, and the board spans "
+            "0..20 in both");
+}
+
+// d-g-n/CS308-GizmoBall's saver names each gizmo by its cell (spinnerboard.txt: `Spinner 7_12 7 12`),
+// and its spinner is a bar that always turns, not NiklavsM's cross: left out, with a warning.
+TEST(TextReader, DgnsSpinnerIsLeftOutByName) {
+  const ReadResult r = readTextBoard("Spinner 7_12 7 12\nSpinner S 3 3\n", "b.txt");
+  ASSERT_EQ(r.board.gizmos.size(), 1u);
+  EXPECT_EQ(r.board.gizmos[0].name, "S");
+  ASSERT_EQ(r.warnings.size(), 1u);
+  EXPECT_NE(r.warnings[0].message.find("d-g-n"), std::string::npos) << r.warnings[0].message;
+  EXPECT_EQ(r.warnings[0].line, 1);
+}
+
 // As rgallagher27/308gizmoball writes it (FileParser.java:118-120: Portal NAME X Y EXITX EXITY, an
 // entry cell and an exit cell), read without a warning; written back as the same line, and as
 // <portal> with its exit in XML.

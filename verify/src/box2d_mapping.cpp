@@ -1,5 +1,8 @@
 #include "gizmo/verify/box2d_mapping.hpp"
 
+#include <stdexcept>
+
+
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/grid_properties.hpp"
 
@@ -62,6 +65,10 @@ Box2dBody box2dBodyOf(const GizmoSpec& gizmo) {
     body.parts = flipperParts();
     return body;
   }
+  // A turning cross would need a kinematic body driven by the spinner's toggles, which the bridge
+  // does not follow yet: refused by name rather than compared as a wrong shape.
+  if (gizmo.type == GizmoType::Spinner)
+    throw std::invalid_argument("the Box2D cross-check does not model the spinner '" + gizmo.name + "' yet");
   const Shape<double> shape = restShape<double>(gizmo);
   body.sensor = gizmo.type == GizmoType::Absorber;
   if (shape.segments.empty()) body.parts.push_back(circlePart(shape.circles.at(0).centre, shape.circles.at(0).radius));

@@ -24,6 +24,10 @@ SceneArithmetic sceneArithmetic(const RunRequest& request) {
       s.reason = std::string(gizmoTypeWord(g.type)) + " " + g.name + " has a 45-degree edge, whose unit normal (sqrt(2)/2) is irrational";
       return s;
     }
+    if (g.type == GizmoType::Spinner) {
+      s.reason = "spinner " + g.name + " turns through angles whose sines and cosines are irrational";
+      return s;
+    }
   }
   s.rationalPossible = true;
   s.reason = "classic model, mu2 = 0, axis-aligned edges: exact unless a ball meets a corner, a circle or a "

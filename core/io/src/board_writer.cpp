@@ -37,6 +37,7 @@ const char* xmlElement(GizmoType t) {
     case GizmoType::Teleporter: return "teleporter";
     case GizmoType::Sink: return "sink";
     case GizmoType::Portal: return "portal";
+    case GizmoType::Spinner: return "spinner";
   }
   return "squareBumper";
 }
@@ -53,6 +54,7 @@ const char* textCommand(GizmoType t) {
     case GizmoType::Teleporter: return "Teleporter";
     case GizmoType::Sink: return "Sink";
     case GizmoType::Portal: return "Portal";
+    case GizmoType::Spinner: return "Spinner";
   }
   return "Square";
 }
@@ -89,6 +91,7 @@ std::string writeXmlBoard(const BoardSpec& board) {
       case GizmoType::Square:
       case GizmoType::Circle:
       case GizmoType::Teleporter:
+      case GizmoType::Spinner:
         if (g.orientation != 0) out += attr("orientation", std::to_string(g.orientation));
         break;
       default:

@@ -12,7 +12,6 @@ constexpr Addition kAdditions[] = {
     {"RightSpinningFlipper", AdditionKind::Gizmo, "a spinning flipper", "lheckemann/gizmoball"},
     {"Accelerator", AdditionKind::Gizmo, "a bumper that speeds the ball up", "course variants"},
     {"DeathSquare", AdditionKind::Gizmo, "a square that stops the ball", "d-g-n/CS308-GizmoBall"},
-    {"Spinner", AdditionKind::Gizmo, "a spinning bar", "d-g-n/CS308-GizmoBall, NiklavsM/Gizmoball"},
     {"Rhombus", AdditionKind::Gizmo, "a diamond bumper", "NiklavsM/Gizmoball"},
     {"Octagon", AdditionKind::Gizmo, "an octagonal bumper", "NiklavsM/Gizmoball"},
     {"Gate", AdditionKind::Gizmo, "a gate", "course variants"},
@@ -29,7 +28,13 @@ constexpr Addition kAdditions[] = {
      "MIT 6.170 staff examples (dwctsai/mit-6.170-gizmoball-3d)"},
 };
 
+constexpr Addition kDgnSpinner{"Spinner", AdditionKind::Gizmo,
+                               "d-g-n's spinner, a bar always turning at 6 pi rad/s, not NiklavsM's cross",
+                               "d-g-n/CS308-GizmoBall"};
+
 }  // namespace
+
+const Addition& dgnSpinner() { return kDgnSpinner; }
 
 const Addition* findAddition(std::string_view word) {
   const std::string lower = toLowerAscii(word);

@@ -25,4 +25,8 @@ struct Addition {
 // The addition spelled `word` (any case), or null.
 const Addition* findAddition(std::string_view word);
 
+// d-g-n/CS308-GizmoBall's spinner, spelled as NiklavsM/Gizmoball's (`Spinner NAME X Y`), which the
+// core simulates: told apart by its name (whether a line is d-g-n's is the reader's to decide).
+const Addition& dgnSpinner();
+
 }  // namespace gizmo::io::detail

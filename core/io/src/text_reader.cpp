@@ -43,6 +43,7 @@ constexpr CommandInfo kCommands[] = {
     {"Teleporter", Cmd::Gizmo, GizmoType::Teleporter, 4, "Teleporter NAME X Y"},
     {"Sink", Cmd::Gizmo, GizmoType::Sink, 4, "Sink NAME X Y"},
     {"Portal", Cmd::Gizmo, GizmoType::Portal, 6, "Portal NAME X Y EXITX EXITY"},
+    {"Spinner", Cmd::Gizmo, GizmoType::Spinner, 4, "Spinner NAME X Y"},
     {"Ball", Cmd::Ball, GizmoType::Square, 6, "Ball NAME X Y VX VY"},
     {"Rotate", Cmd::Rotate, GizmoType::Square, 2, "Rotate NAME"},
     {"Delete", Cmd::Delete, GizmoType::Square, 2, "Delete NAME"},
@@ -128,6 +129,13 @@ class TextReader {
                                "LeftFlipper, RightFlipper, Absorber, Ball, Rotate, Delete, Move, Connect, "
                                "KeyConnect, Gravity and Friction");
       if (t.size() >= 2) failed_.insert(std::string(t[1].text));
+      return;
+    }
+    // d-g-n/CS308-GizmoBall's saver names every gizmo by its cell, X_Y; its spinner is another
+    // gizmo than NiklavsM/Gizmoball's of the same spelling, which the core simulates.
+    if (cmd->type == GizmoType::Spinner && cmd->cmd == Cmd::Gizmo && t.size() == 4 &&
+        t[1].text == std::string(t[2].text) + "_" + std::string(t[3].text)) {
+      addition(dgnSpinner(), t);
       return;
     }
     if (t[0].text != cmd->canonical) keywordCase(t[0], cmd->canonical);
@@ -360,7 +368,7 @@ class TextReader {
     if (cmd.cmd == Cmd::Absorber) {
       g.width = static_cast<int>(v[2] - v[0]);
       g.height = static_cast<int>(v[3] - v[1]);
-    } else if (cmd.type == GizmoType::LeftFlipper || cmd.type == GizmoType::RightFlipper) {
+    } else if (ownSide(cmd.type) == 2) {
       g.width = g.height = 2;
     } else if (cmd.type == GizmoType::Portal) {
       g.exitX = static_cast<int>(v[2]);

@@ -67,6 +67,7 @@ constexpr GizmoElement kGizmoElements[] = {
     {"rightFlipper", GizmoType::RightFlipper}, {"absorber", GizmoType::Absorber},
     {"booster", GizmoType::Booster},       {"teleporter", GizmoType::Teleporter},
     {"sink", GizmoType::Sink},             {"portal", GizmoType::Portal},
+    {"spinner", GizmoType::Spinner},
 };
 
 // " (did you mean <squareBumper>?)" when name differs from one of known only in case.
@@ -343,7 +344,7 @@ class XmlReader {
     g.type = type;
     g.where = elementAt(e);
     long long x = 0, y = 0, orientation = 0, width = 1, height = 1, exitX = 0, exitY = 0;
-    if (type == GizmoType::LeftFlipper || type == GizmoType::RightFlipper) width = height = 2;
+    if (ownSide(type) == 2) width = height = 2;
     bool ok = name(a.at("name"), g.name);
     ok = whole(a.at("x"), "x", x) && ok;
     ok = whole(a.at("y"), "y", y) && ok;

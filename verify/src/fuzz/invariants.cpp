@@ -6,6 +6,7 @@
 
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/verify/fuzz/checker_geometry.hpp"
 #include "gizmo/verify/fuzz/run_description.hpp"
 
@@ -25,8 +26,11 @@ namespace {
 // Instants looked at between two events, evenly spaced inside the interval.
 constexpr int kSamplesBetweenEvents = 3;
 // The fastest a flipper's surface can move: 6π rad/s at 1.75 L from the pivot (the tip's far
-// side), rounded up.
+// side), rounded up; a spinner's: 3.14 rad/s at 0.75 L from its centre, rounded up.
 constexpr double kFlipperSurfaceSpeed = 33.0;
+constexpr double kSpinnerSurfaceSpeed = 2.5;
+
+bool turnsAsCapsules(GizmoType t) { return isFlipper(t) || t == GizmoType::Spinner; }
 
 template <class Real>
 std::string text(const Real& x) {
@@ -57,7 +61,13 @@ struct InvariantChecker<Real>::Snapshot {
     Trajectory<Real> path;  // from `time`
   };
   std::vector<BallPath> balls;  // the free balls
-  std::map<GizmoId, std::pair<SwingingAxis<Real>, bool>> flippers;  // axis at `time`, swinging
+  // The flippers' and spinners' capsules at `time`, and whether they turn.
+  struct Turning {
+    std::vector<SwingingAxis<Real>> arms;
+    bool moving = false;
+    double surfaceSpeed = 0;  // the fastest the surface moves while it turns
+  };
+  std::map<GizmoId, Turning> turning;
 };
 
 template <class Real>
@@ -76,7 +86,7 @@ InvariantChecker<Real>::InvariantChecker(const GameBoard<Real>& board, std::vect
     piece.type = spec.type;
     const Shape<Real> shape = restShape<Real>(spec);
     if (isDiscGizmo(spec.type)) piece.centre = shape.circles.front().centre;
-    else if (spec.type != GizmoType::LeftFlipper && spec.type != GizmoType::RightFlipper)
+    else if (!turnsAsCapsules(spec.type))
       for (const CircleFeature<Real>& c : shape.circles) piece.polygon.push_back(c.centre);
     geometry_->pieces.push_back(piece);
     // A ball can touch the gizmo only with its centre within a radius of its box.
@@ -127,9 +137,14 @@ void InvariantChecker<Real>::takeSnapshot() {
     if (!b.captured()) s->balls.push_back({id, b.trajectoryAt(s->time)});
   }
   for (const typename Geometry::Piece& p : geometry_->pieces) {
-    if (p.type != GizmoType::LeftFlipper && p.type != GizmoType::RightFlipper) continue;
-    const auto* f = dynamic_cast<const Flipper<Real>*>(&board_.gizmo(p.id));
-    s->flippers[p.id] = {f->axisAt(s->time), f->swinging()};
+    if (!turnsAsCapsules(p.type)) continue;
+    typename Snapshot::Turning& t = s->turning[p.id];
+    if (const auto* f = dynamic_cast<const Flipper<Real>*>(&board_.gizmo(p.id))) {
+      t = {{f->axisAt(s->time)}, f->swinging(), kFlipperSurfaceSpeed};
+    } else if (const auto* spinner = dynamic_cast<const Spinner<Real>*>(&board_.gizmo(p.id))) {
+      t = {{}, spinner->turning(), kSpinnerSurfaceSpeed};
+      for (int k = 0; k < 4; ++k) t.arms.push_back(spinner->armAt(k, s->time));
+    }
   }
   snapshot_ = std::move(s);
 }
@@ -161,10 +176,13 @@ void InvariantChecker<Real>::checkOverlaps(const Real& time, const Snapshot& s, 
       } else if (!g.polygon.empty()) {
         distance = signedDistanceToPolygon(p, g.polygon);
       } else {
-        const SwingingAxis<Real>& axis = s.flippers.at(g.id).first;
-        const Real along = s.flippers.at(g.id).second ? tau : Real(0);
-        const Vec2<Real> tip = axis.pivot + axis.length * axis.direction(along);
-        distance = distanceToSegment(p, axis.pivot, tip) - axis.radius;
+        const typename Snapshot::Turning& turning = s.turning.at(g.id);
+        const Real along = turning.moving ? tau : Real(0);
+        distance = Real(kBoardSize);
+        for (const SwingingAxis<Real>& axis : turning.arms) {
+          const Vec2<Real> tip = axis.pivot + axis.length * axis.direction(along);
+          distance = std::min(distance, Real(distanceToSegment(p, axis.pivot, tip) - axis.radius));
+        }
       }
       const Real depth = r - distance;
       if (!(depth <= bound)) report("inside " + board_.gizmo(g.id).name(), depth);
@@ -269,11 +287,11 @@ void InvariantChecker<Real>::checkEnergy(const Event<Real>& e, const EventOutcom
     const Real lift = params.gravity * Real(y - board_.gizmo(id).asBall()->positionAt(board_.now()).y);
     if (Real(0) < lift) allowance += lift;
   }
-  // A swinging flipper's surface moves at up to kFlipperSurfaceSpeed: a ball leaves it at most
-  // that much faster than it came relative to it, so |v'| ≤ |v| + 2u.
-  const auto flipper = snapshot_->flippers.find(e.a);
-  if (e.kind == EventKind::Collision && flipper != snapshot_->flippers.end() && flipper->second.second) {
-    const Real u(kFlipperSurfaceSpeed);
+  // A turning flipper's or spinner's surface moves at up to its surfaceSpeed u: a ball leaves it
+  // at most that much faster than it came relative to it, so |v'| ≤ |v| + 2u.
+  const auto turning = snapshot_->turning.find(e.a);
+  if (e.kind == EventKind::Collision && turning != snapshot_->turning.end() && turning->second.moving) {
+    const Real u(turning->second.surfaceSpeed);
     for (const BallChange<Real>& c : outcome.balls()) {
       const Real speed = length(c.velocityBefore);
       allowance += Real(2) * u * speed + Real(2) * u * u;
@@ -339,8 +357,9 @@ void InvariantChecker<Real>::checkCoverage() {
                                       text(now) + (it == firstEvent.end() ? std::string(" (none at all)")
                                                                           : " (its first at t = " + text(it->second) + ")"));
   }
-  for (const auto& [id, flipper] : snapshot_->flippers) {
-    if (!flipper.second) continue;
+  // A swinging flipper must have its stop pending (a spinner turns on without one).
+  for (const auto& [id, turning] : snapshot_->turning) {
+    if (!turning.moving || board_.gizmo(id).kind() == GizmoKind::Spinner) continue;
     bool stop = false;
     for (const Event<Real>& e : queue) stop = stop || (e.kind == EventKind::FlipperStop && e.a == id);
     if (!stop) fail(Invariant::EventQueue, "swinging flipper " + board_.gizmo(id).name() + " has no pending stop at t = " + text(now));

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/io/board_writer.hpp"
 #include "gizmo/io/diagnostics.hpp"
 #include "gizmo/io/key_script.hpp"
@@ -190,6 +191,22 @@ bool grazes(const GameBoard<double>& board, const Event<double>& e, const EventO
     const SwingingAxis<double> axis = flipper->axisAt(e.time);
     touch = touchOnCapsule(axis.pivot, Vec2<double>(axis.pivot + axis.length * axis.direction(0.0)), axis.radius,
                            ball.position);
+  } else if (spec.type == GizmoType::Spinner) {
+    // A still spinner is two crossed capsules, judged like a still flipper on the nearer one; a
+    // turning one is not judged.
+    const auto* spinner = dynamic_cast<const Spinner<double>*>(&board.gizmo(g));
+    if (!spinner || spinner->turning()) return false;
+    double nearest = 0;
+    for (int k = 0; k < 2; ++k) {
+      const SwingingAxis<double> arm = spinner->armAt(k, e.time);
+      const Vec2<double> reach = arm.length * arm.direction(0.0);
+      const Vec2<double> from = arm.pivot - reach, to = arm.pivot + reach;
+      const double distance = length(Vec2<double>(ball.position - nearestPointOnSegment(ball.position, from, to)));
+      if (k == 0 || distance < nearest) {
+        nearest = distance;
+        touch = touchOnCapsule(from, to, arm.radius, ball.position);
+      }
+    }
   } else {
     touch = touchOnGizmo(spec, ball.position);
   }

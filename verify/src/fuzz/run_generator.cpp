@@ -61,9 +61,10 @@ struct Builder {
 
   // The additions of other programs (docs/physics.md, "Gizmos other programs added") take the
   // place of gizmos of the same outline: half the triangles become boosters, half the circles
-  // teleporters, a quarter of the squares sinks and a third of the teleporters portals, each with
-  // an exit cell anywhere on the board (each drawn after the ones before, so that boards without
-  // squares or teleporters keep what came before). The choice is drawn
+  // teleporters, a quarter of the squares sinks, a third of the teleporters portals, each with
+  // an exit cell anywhere on the board, and a third of the flippers spinners (each drawn after the
+  // ones before, so that boards without squares, teleporters or flippers keep what came before;
+  // a spinner keeps the key connection its flipper was given). The choice is drawn
   // from a stream of its own, so that every other draw, and every board without a triangle,
   // stays what it was before the additions.
   void additions(std::uint64_t seed) {
@@ -89,6 +90,8 @@ struct Builder {
         g.exitX = own.whole(0, kBoardSize - 1);
         g.exitY = own.whole(0, kBoardSize - 1);
       }
+    for (GizmoSpec& g : board.gizmos)
+      if (isFlipper(g.type) && own.chance(3)) g.type = GizmoType::Spinner;
   }
 
   void connections() {
@@ -102,7 +105,7 @@ struct Builder {
                                        [&](const ConnectSpec& c) { return c.source == source && c.target == g.name; });
         if (!twice) board.connections.push_back(ConnectSpec{source, g.name, {}});
       }
-      if (rng.chance(3) || isFlipper(g.type)) keyConnect(g.name, rng.whole(0, 1) ? KeyDirection::Down : KeyDirection::Up);
+      if (rng.chance(3) || isFlipper(g.type) || g.type == GizmoType::Spinner) keyConnect(g.name, rng.whole(0, 1) ? KeyDirection::Down : KeyDirection::Up);
     }
   }
 

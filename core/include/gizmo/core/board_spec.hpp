@@ -10,7 +10,8 @@ namespace gizmo {
 
 // Booster and later entries: gizmos that other Gizmoball programs added (docs/physics.md,
 // "Gizmos other programs added").
-enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal };
+enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal,
+                       Spinner };
 enum class KeyDirection { Down, Up };
 
 // Where a statement came from in its file (1-based; 0 when it was not read from a file).
@@ -25,12 +26,24 @@ struct GizmoSpec {
   int x = 0;            // upper-left corner of the bounding box, in L
   int y = 0;
   int orientation = 0;  // degrees clockwise on screen: 0, 90, 180 or 270
-  int width = 1;        // bounding box in L: 1×1 bumpers, 2×2 flippers, w×h absorbers
+  int width = 1;        // bounding box in L: 1×1 bumpers, 2×2 flippers and spinners, w×h absorbers
   int height = 1;
   SourcePos where;
   int exitX = 0;  // a portal's exit cell (upper-left corner, in L); unused by the other gizmos
   int exitY = 0;
 };
+
+// The side of a gizmo's square box in L: 2 for flippers and spinners, 1 for the bumpers. An
+// absorber's box is what its file says (0 here).
+inline int ownSide(GizmoType t) {
+  switch (t) {
+    case GizmoType::LeftFlipper:
+    case GizmoType::RightFlipper:
+    case GizmoType::Spinner: return 2;
+    case GizmoType::Absorber: return 0;
+    default: return 1;
+  }
+}
 
 struct BallSpec {
   std::string name;

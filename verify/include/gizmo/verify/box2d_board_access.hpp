@@ -28,6 +28,8 @@ class DrivenBoardAccess final : public BoardAccess<double> {
   // Box2D moves the bodies: a teleporter is a circle bumper here, and says where the runs part.
   bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return false; }
   bool cradled(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
+  // Box2D's bridge drives flippers alone; a board with a spinner is refused before it gets here.
+  void performAction(GizmoId) override {}
 
  private:
   PhysicsParams<double> params_;

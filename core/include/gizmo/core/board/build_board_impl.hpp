@@ -8,6 +8,7 @@
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/polygonal_gizmo.hpp"
 #include "gizmo/core/gizmos/sink.hpp"
+#include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
 
 namespace gizmo {
@@ -39,6 +40,9 @@ std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams
       case GizmoType::LeftFlipper:
       case GizmoType::RightFlipper:
         board->add(std::make_unique<Flipper<Real>>(g));
+        break;
+      case GizmoType::Spinner:
+        board->add(std::make_unique<Spinner<Real>>(g));
         break;
       case GizmoType::Absorber: {
         auto a = std::make_unique<Absorber<Real>>(g);

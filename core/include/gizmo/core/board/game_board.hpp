@@ -138,7 +138,7 @@ class GameBoard final : private BoardAccess<Real> {
   void execute(const Event<Real>& e);
   void applyEvent(const Event<Real>& e);
   void fireTriggersOf(GizmoId source);
-  void performAction(GizmoId target);
+  void performAction(GizmoId target) override;
   void recomputePending();
   void scheduleBallEvents(Ball<Real>& ball);
   void computePair(GizmoId ball, GizmoId other);

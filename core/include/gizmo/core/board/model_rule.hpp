@@ -18,9 +18,10 @@ enum class ModelRule : std::uint8_t {
   Boosted,           // a booster doubled a ball's speed
   Teleported,        // a teleporter moved a ball to its exit
   Sunk,              // a sink took a ball out of play
+  SpinnerBlocked,    // a spinner pinching a ball stops where it stands
 };
 // The last rule: a log's rule value above it is refused.
-inline constexpr ModelRule kLastModelRule = ModelRule::Sunk;
+inline constexpr ModelRule kLastModelRule = ModelRule::SpinnerBlocked;
 
 inline std::string_view modelRuleName(ModelRule r) {
   switch (r) {
@@ -36,6 +37,7 @@ inline std::string_view modelRuleName(ModelRule r) {
     case ModelRule::Boosted: return "boosted";
     case ModelRule::Teleported: return "teleported";
     case ModelRule::Sunk: return "sunk";
+    case ModelRule::SpinnerBlocked: return "spinner-blocked";
   }
   return "?";
 }

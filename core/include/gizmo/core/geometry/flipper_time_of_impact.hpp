@@ -202,6 +202,29 @@ std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, cons
   return touch;
 }
 
+// Whether a ball on path `at` touching a swinging capsule (gap at most `slack`) is pressed into
+// it, by its own acceleration or by the capsule turning into it, and not opening faster than
+// restSpeed / 2. Such a ball is hit at once: the gap searches only find gaps that go from positive
+// to zero, and this one starts at zero. (Half of restSpeed: the minimum bounce sends a ball off at
+// restSpeed, which must not count again.)
+template <class Real>
+bool pressedIntoSwing(const Trajectory<Real>& at, const SwingTouch<Real>& touch, const Real& slack, const Real& restSpeed) {
+  return !(slack < touch.gap) && dot(Vec2<Real>(at.v - touch.surfaceVelocity), touch.normal) < restSpeed / Real(2) &&
+         Real(dot(at.a, touch.normal) + touch.bend) < Real(0);
+}
+
+// The first of a swinging capsule's features (the sides, then the tip) that the ball touches
+// along the axis and that `accept` takes.
+template <class Real, class Accept>
+std::optional<int> touchedSwingFeature(const Trajectory<Real>& t, const Real& r, const SwingingAxis<Real>& axis,
+                                       Accept&& accept) {
+  for (const int feature : {0, 1, 3}) {
+    const std::optional<SwingTouch<Real>> touch = swingTouchNow(t, r, axis, feature);
+    if (touch && touch->alongAxis && accept(*touch)) return feature;
+  }
+  return std::nullopt;
+}
+
 // First contact of a ball (radius r) with a swinging capsule over τ ∈ [0, limit], and which
 // feature: 0 and 1 the long sides, 3 the tip (the pivot circle, 2, does not move: the caller
 // treats it as a static circle).

@@ -59,6 +59,22 @@ inline FlipperLayout flipperLayout(GizmoType type, int orientationDegrees) {
   return f;
 }
 
+// The spinner (NiklavsM/Gizmoball's Spinner.java): a cross of two capsules through the centre of
+// its 2×2 box, each arm a capsule from the centre `kSpinnerArmLength` long (its tip's centre) and
+// `kSpinnerArmRadius` wide; it turns at kSpinnerTurnRate rad/s (clockwise on screen).
+inline constexpr double kSpinnerArmLength = 0.5;
+inline constexpr double kSpinnerArmRadius = 0.25;
+inline constexpr double kSpinnerTurnRate = 3.14;
+
+// The cross about `centre` with one arm along the unit vector u.
+template <class Real>
+void addSpinnerCross(Shape<Real>& shape, const Vec2<Real>& centre, const Vec2<Real>& u) {
+  const Vec2<Real> w(-u.y, u.x);
+  const Real half = fromDouble<Real>(kSpinnerArmLength), radius = fromDouble<Real>(kSpinnerArmRadius);
+  addCapsule(shape, Vec2<Real>(centre - half * u), Vec2<Real>(centre + half * u), radius);
+  addCapsule(shape, Vec2<Real>(centre - half * w), Vec2<Real>(centre + half * w), radius);
+}
+
 // Unit vector at angle q·π/2: exact.
 template <class Real>
 Vec2<Real> quarterDirection(int q) {
@@ -104,6 +120,11 @@ Shape<Real> restShape(const GizmoSpec& g) {
     case GizmoType::Absorber:
       addPolygon(s, {at(0, 0), at(g.width, 0), at(g.width, g.height), at(0, g.height)});
       break;
+    case GizmoType::Spinner: {
+      // A cross looks the same turned by any whole quarter: the orientation changes nothing.
+      addSpinnerCross(s, at(1, 1), Vec2<Real>(Real(1), Real(0)));
+      break;
+    }
     case GizmoType::LeftFlipper:
     case GizmoType::RightFlipper: {
       const FlipperLayout f = flipperLayout(g.type, g.orientation);

@@ -20,7 +20,9 @@ namespace gizmo {
 
 enum class CollisionAnswer { CanCollide, Defer, NeverCollides };
 
-enum class GizmoKind { Ball, OuterWalls, Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal };
+enum class GizmoKind {
+  Ball, OuterWalls, Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal, Spinner
+};
 
 template <class Real> class Ball;
 
@@ -56,6 +58,9 @@ class BoardAccess {
   // and another gizmo are still surfaces it can rest against, the other within a minimum
   // bounce's rise of it, and gravity is held between the two (geometry/cradle.hpp).
   virtual bool cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const = 0;
+  // Gizmo `target` performs its action now, as a trigger would make it, and the log records it
+  // as an action (a gizmo that acts on its own hits, like the spinner).
+  virtual void performAction(GizmoId target) = 0;
 };
 
 template <class Real>

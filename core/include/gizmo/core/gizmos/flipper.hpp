@@ -99,20 +99,12 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
       if (!hit) return std::nullopt;
       return Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
     }
-    // A ball touching the moving capsule, not opening faster than restSpeed / 2, and pressed into
-    // it (by its own acceleration or by the capsule turning into it) is hit now: the gap search
-    // below only finds gaps that go from positive to zero, and this gap starts at zero. (Half of
-    // restSpeed: the minimum bounce sends a ball off at restSpeed, which must not count again.)
+    // A ball touching the moving capsule and pressed into it is hit now (pressedIntoSwing).
     const SwingingAxis<Real> axis = axisAt(now);
-    // Whether a ball on path `at` touching the capsule (gap at most `slack`) is pressed into it.
     auto pressedOn = [&params](const Trajectory<Real>& at, const Real& slack) {
-      return [&params, &at, slack](const SwingTouch<Real>& touch) {
-        return !(slack < touch.gap) &&
-               dot(Vec2<Real>(at.v - touch.surfaceVelocity), touch.normal) < params.restSpeed / Real(2) &&
-               Real(dot(at.a, touch.normal) + touch.bend) < Real(0);
-      };
+      return [&params, &at, slack](const SwingTouch<Real>& touch) { return pressedIntoSwing(at, touch, slack, params.restSpeed); };
     };
-    const std::optional<int> pressed = touchedFeature(t, r, axis, pressedOn(t, Real(0)));
+    const std::optional<int> pressed = touchedSwingFeature(t, r, axis, pressedOn(t, Real(0)));
     if (pressed) return Contact<Real>{now, *pressed, EventKind::Collision};
     const Real toLimit = limit - now, toStop = stopTime() - now;
     const Real horizon = minOf(toLimit, toStop);
@@ -128,24 +120,12 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     // the side then to within its position resolution and pressed into it.
     const Real endSearch = best ? Real(best->time - now) : horizon;
     const auto reached = sideEndComesUnder(t, r, axis, endSearch, [&](const Trajectory<Real>& at, const SwingingAxis<Real>& then) {
-      return touchedFeature(at, r, then, pressedOn(at, positionResolution(at.p)));
+      return touchedSwingFeature(at, r, then, pressedOn(at, positionResolution(at.p)));
     });
     if (reached && (!best || now + reached->tau < best->time))
       best = Contact<Real>{now + reached->tau, reached->feature, EventKind::Collision};
     if (!best && !(toLimit < toStop)) best = strikeAsTheSwingEnds(*ball, r);
     return best;
-  }
-
-  // The first of the moving capsule's features (the sides, then the tip) that the ball touches
-  // along the axis and that `accept` takes.
-  template <class Accept>
-  static std::optional<int> touchedFeature(const Trajectory<Real>& t, const Real& r, const SwingingAxis<Real>& axis,
-                                           Accept&& accept) {
-    for (const int feature : {0, 1, 3}) {
-      const std::optional<SwingTouch<Real>> touch = swingTouchNow(t, r, axis, feature);
-      if (touch && touch->alongAxis && accept(*touch)) return feature;
-    }
-    return std::nullopt;
   }
 
   // A ball that the capsule reaches just as the swing ends is struck then, at the stop (a
@@ -160,7 +140,7 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     // Out of the capsule's reach about the pivot: no feature is near, and no trigonometry is spent.
     const Real reach = axis.length + axis.radius + r + resolution;
     if (reach * reach < lengthSquared(Vec2<Real>(t.p - axis.pivot))) return std::nullopt;
-    const std::optional<int> reached = touchedFeature(t, r, axis, [&](const SwingTouch<Real>& touch) {
+    const std::optional<int> reached = touchedSwingFeature(t, r, axis, [&](const SwingTouch<Real>& touch) {
       return !(resolution < absOf(touch.gap)) && dot(Vec2<Real>(t.v - touch.surfaceVelocity), touch.normal) < Real(0);
     });
     if (!reached) return std::nullopt;

@@ -1,0 +1,111 @@
+// The spinner (docs/physics.md, "Gizmos other programs added"): still at load, started and stopped
+// by its own hits and by triggers, turning a quarter in (π/2)/3.14 s; its hits computed by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gizmo/core/gizmos/spinner.hpp"
+#include "support/board_builder.hpp"
+
+namespace gizmo {
+namespace {
+
+using namespace test;
+
+// Spinner S in cells (9..10, 9..10), centre (10, 10): at rest one capsule runs from (9.5, 10) to
+// (10.5, 10) and one from (10, 9.5) to (10, 10.5), both 0.25 wide. Without gravity a ball at
+// (5, 10) moving right at 10 L/s meets the left arm's end circle, centre (9.5, 10), when its own
+// centre is 0.5 short of it, at (9, 10), after 0.4 s: head on, so it leaves at 0.9 · 10 L/s back.
+BoardSpec headOn() {
+  BoardSpec spec = emptyBoard(0, 0, 0);
+  spec.gizmos.push_back(gizmoAt(GizmoType::Spinner, "S", 9, 9, 0, 2, 2));
+  spec.balls.push_back(ballAt("K", 5, 10, 10, 0));
+  return spec;
+}
+
+const Spinner<double>& spinnerOf(const GameBoard<double>& board) {
+  return dynamic_cast<const Spinner<double>&>(board.gizmo(*board.find("S")));
+}
+
+TEST(Spinner, AHitOnTheStillCrossBouncesAndStartsIt) {
+  auto board = build(headOn());
+  Recorder<double> rec;
+  board->setObserver(&rec);
+  EXPECT_FALSE(spinnerOf(*board).turning());
+  board->tick(0.45);
+  const GizmoId s = *board->find("S");
+  ASSERT_EQ(rec.ofKind(EventKind::Collision).size(), 1u);
+  EXPECT_EQ(rec.ofKind(EventKind::Collision)[0].event.a, s);
+  EXPECT_NEAR(rec.ofKind(EventKind::Collision)[0].event.time, 0.4, 1e-12);
+  EXPECT_EQ(rec.actions, std::vector<GizmoId>{s});  // it acts on its own hit, recorded as an action
+  EXPECT_TRUE(spinnerOf(*board).turning());
+  const Ball<double>& ball = board->ballById(*board->find("K"));
+  EXPECT_NEAR(ball.velocityAt(board->now()).x, -9, 1e-12);
+  EXPECT_NEAR(ball.velocityAt(board->now()).y, 0, 1e-12);
+  // 0.05 s of turning at 3.14 rad/s.
+  EXPECT_NEAR(spinnerOf(*board).angleAt(board->now()), 0.05 * 3.14, 1e-12);
+}
+
+// Turning, its angle grows at 3.14 rad/s across quarter turns, split into whole quarters and a
+// phase when asked; the ball, back from the left wall at 9 L/s, meets the turning cross, and that
+// hit stops it.
+TEST(Spinner, ItTurnsOnAcrossQuartersAndATurningHitStopsIt) {
+  auto board = build(headOn());
+  Recorder<double> rec;
+  board->setObserver(&rec);
+  board->tick(1.9);
+  const Spinner<double>& spinner = spinnerOf(*board);
+  ASSERT_TRUE(spinner.turning());
+  for (double t : {0.5, 0.9, 1.2, 1.6, 1.9}) {
+    const double theta = 3.14 * (t - 0.4);
+    EXPECT_NEAR(spinner.angleAt(t), theta, 1e-12) << t;
+    const Vec2<double> u = spinner.armAt(0, t).direction(0.0);
+    EXPECT_NEAR(u.x, std::cos(theta), 1e-12) << t;
+    EXPECT_NEAR(u.y, std::sin(theta), 1e-12) << t;
+    EXPECT_LT(spinner.armAt(0, t).phi0, std::acos(-1.0) / 2) << t;
+  }
+  // The wall at 0.4 + 8.75 / 9 s sends it back; it reaches the cross's reach (0.75 + 0.25 from the
+  // centre) no sooner than 8.75 / 9 s later.
+  board->tick(1.6);  // to 3.5 s
+  const auto hits = rec.ofKind(EventKind::Collision);
+  ASSERT_GE(hits.size(), 3u);
+  EXPECT_GT(hits[2].event.time, 0.4 + 2 * 8.75 / 9 - 1e-9);
+  EXPECT_EQ(rec.actions.size(), 2u);
+  EXPECT_FALSE(spinnerOf(*board).turning());
+}
+
+// A trigger toggles it like a hit: started and stopped by a key, it stands still at the angle it
+// had turned to, and a ball on that arm's line is met by the arm where it stands.
+TEST(Spinner, ATriggerStartsAndStopsIt) {
+  BoardSpec spec = emptyBoard(0, 0, 0);
+  spec.gizmos.push_back(gizmoAt(GizmoType::Spinner, "S", 9, 9, 0, 2, 2));
+  spec.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, "S", {}});
+  auto board = build(spec);
+  board->scheduleInput(0.0, 32, KeyDirection::Down);
+  board->scheduleInput(0.05, 32, KeyDirection::Down);
+  board->tick(0.01);
+  EXPECT_TRUE(spinnerOf(*board).turning());
+  board->tick(0.09);
+  EXPECT_FALSE(spinnerOf(*board).turning());
+  EXPECT_NEAR(spinnerOf(*board).angleAt(board->now()), 0.05 * 3.14, 1e-12);
+}
+
+// Its still shape is the cross at the angle it stopped at: a quarter turn on is the same cross,
+// and the rest shape of its spec is the cross at load.
+TEST(Spinner, ItsRestShapeIsTheCross) {
+  const Shape<double> s = restShape<double>(gizmoAt(GizmoType::Spinner, "S", 9, 9, 0, 2, 2));
+  ASSERT_EQ(s.segments.size(), 4u);
+  ASSERT_EQ(s.circles.size(), 4u);
+  EXPECT_EQ(s.circles[0].centre, Vec2<double>(9.5, 10));
+  EXPECT_EQ(s.circles[1].centre, Vec2<double>(10.5, 10));
+  EXPECT_EQ(s.circles[2].centre, Vec2<double>(10, 9.5));
+  EXPECT_EQ(s.circles[3].centre, Vec2<double>(10, 10.5));
+  for (const CircleFeature<double>& c : s.circles) EXPECT_EQ(c.radius, 0.25);
+  auto board = build(headOn());
+  const Shape<double>& still = spinnerOf(*board).stillShape();
+  ASSERT_EQ(still.circles.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(still.circles[k].centre, s.circles[k].centre);
+}
+
+}  // namespace
+}  // namespace gizmo
