@@ -132,29 +132,38 @@ bool insideConvex(double px, double py, const std::vector<Vec2<double>>& poly) {
   return true;
 }
 
-// A gizmo's rest shape prepared for the ball test: its features, and the convex region they
+// A gizmo's rest shape prepared for the ball test: its features, and the convex regions they
 // bound. restShape lists a polygon's edges as a closed chain and a capsule's two sides as
 // p+off→q+off, q−off→p−off; in both cases the chain of segment end points, without repeats, is
-// the convex region whose inside is part of the solid (the capsule's round ends are its circles).
+// a convex region whose inside is part of the solid (the capsule's round ends are its circles).
+// A spinner's cross is two capsules, so two regions of two sides each; every other shape is one.
 struct PreparedShape {
   Shape<double> shape;
-  std::vector<Vec2<double>> hull;
+  std::vector<std::vector<Vec2<double>>> hulls;
 };
 
 PreparedShape prepare(const GizmoSpec& g) {
   PreparedShape p;
   p.shape = restShape<double>(g);
-  for (const auto& s : p.shape.segments) {
-    if (p.hull.empty() || !(p.hull.back() == s.a)) p.hull.push_back(s.a);
-    if (!(p.hull.back() == s.b)) p.hull.push_back(s.b);
+  const std::size_t n = p.shape.segments.size();
+  const std::size_t perPart = g.type == GizmoType::Spinner ? 2 : std::max<std::size_t>(n, 1);
+  for (std::size_t first = 0; first < n; first += perPart) {
+    std::vector<Vec2<double>> hull;
+    for (std::size_t i = first; i < std::min(n, first + perPart); ++i) {
+      const SegmentFeature<double>& s = p.shape.segments[i];
+      if (hull.empty() || !(hull.back() == s.a)) hull.push_back(s.a);
+      if (!(hull.back() == s.b)) hull.push_back(s.b);
+    }
+    if (hull.size() > 1 && hull.front() == hull.back()) hull.pop_back();
+    p.hulls.push_back(std::move(hull));
   }
-  if (p.hull.size() > 1 && p.hull.front() == p.hull.back()) p.hull.pop_back();
   return p;
 }
 
 // The open disc of radius kBallRadius about p shares area with the solid shape.
 bool ballOverlaps(double px, double py, const PreparedShape& p) {
-  if (insideConvex(px, py, p.hull)) return true;
+  for (const std::vector<Vec2<double>>& hull : p.hulls)
+    if (insideConvex(px, py, hull)) return true;
   for (const auto& s : p.shape.segments)
     if (segmentCloserThan(px, py, s.a, s.b, kBallRadius)) return true;
   for (const auto& c : p.shape.circles)

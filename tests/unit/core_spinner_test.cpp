@@ -90,6 +90,29 @@ TEST(Spinner, ATriggerStartsAndStopsIt) {
   EXPECT_NEAR(spinnerOf(*board).angleAt(board->now()), 0.05 * 3.14, 1e-12);
 }
 
+// A ball at rest beside the cross, within the reach of its arms (0.985 L from the centre, the
+// arms reaching 0.75 + 0.25), is struck once a trigger starts it: the arm along −y turns towards
+// it. Its pairs hold for ever, as a still ball's do, but the board still predicts them (the first
+// fresh-seed campaign with spinners: seed 141421357, cases 175 and 481, where such a ball was
+// passed through).
+TEST(Spinner, ABallAtRestBesideItIsStruckWhenItStarts) {
+  BoardSpec spec = emptyBoard(0, 0, 0);
+  spec.gizmos.push_back(gizmoAt(GizmoType::Spinner, "S", 11, 6, 0, 2, 2));
+  spec.balls.push_back(ballAt("K", 12.4, 6.1, 0, 0));
+  spec.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, "S", {}});
+  auto board = build(spec);
+  Recorder<double> rec;
+  board->setObserver(&rec);
+  board->scheduleInput(0.0, 32, KeyDirection::Down);
+  board->tick(0.5);
+  const auto hits = rec.ofKind(EventKind::Collision);
+  ASSERT_GE(hits.size(), 1u);
+  EXPECT_EQ(hits[0].event.a, *board->find("S"));
+  EXPECT_GT(hits[0].event.time, 0.0);
+  EXPECT_LT(hits[0].event.time, 0.2);
+  EXPECT_GT(lengthSquared(board->ballById(*board->find("K")).velocityAt(board->now())), 0.0);
+}
+
 // Its still shape is the cross at the angle it stopped at: a quarter turn on is the same cross,
 // and the rest shape of its spec is the cross at load.
 TEST(Spinner, ItsRestShapeIsTheCross) {

@@ -597,7 +597,8 @@ void GameBoard<Real>::computePair(GizmoId ballId, GizmoId other) {
   const GizmoId collider = colliderOf(ballId, other);
   if (collider == kNoGizmo) return;
   const Real limit = minOf(validUntil_[std::size_t(ballId)], validUntil_[std::size_t(other)]);
-  if (!(limit < infinity())) return;  // neither side can move: nothing to predict
+  // Neither side can move (or the gizmo moves for ever, and bounds its own search).
+  if (!(limit < infinity()) && !gizmos_[std::size_t(other)]->movesForEver()) return;
   const GizmoId collidee = collider == ballId ? other : ballId;
   auto predict = [&] {
     return gizmos_[std::size_t(collider)]->timeUntilCollision(*gizmos_[std::size_t(collidee)], now_, limit, params_);

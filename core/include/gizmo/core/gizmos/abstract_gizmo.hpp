@@ -107,6 +107,10 @@ class AbstractGizmo {
   // Until when predictions made now against this gizmo hold (a swinging flipper: until it
   // stops); nullopt for a gizmo that stays as it is.
   virtual std::optional<Real> predictionHorizon() const { return std::nullopt; }
+  // Whether it moves with no end in sight (a turning spinner): its predictions hold for ever,
+  // yet a ball at rest beside it may still be struck, so the board predicts those pairs too and
+  // the gizmo bounds its own search.
+  virtual bool movesForEver() const { return false; }
 
   // What changes as the board runs (board_state.hpp); gizmos that never change keep nothing.
   // restoreState reads back what saveState wrote and checks the ids it finds.
