@@ -290,6 +290,22 @@ TEST(FuzzRegressions, ABallPassingAStillFlippersTipAtATangentStrikesItOnlyByRoun
   expectModelsAgree(run);
 }
 
+// Campaign seed 223606798, case 2158, shrunk: B7 knocks B24 onto right flipper G7's pivot end,
+// where it comes to sit on the flipper's side 4.5e-14 L (50 ulps of rounding) from that end in the
+// ballistic run, and a hair nearer it in the classic run. The key swings the flipper away from it:
+// the side's end leaves the ball at 9.4 L/s, long before the side could press into it by a
+// rounding, so in neither run is it struck.
+TEST(FuzzRegressions, ASideSwingingAwayFromABallAtItsPivotEndDoesNotStrikeIt) {
+  BoardSpec board = test::emptyBoard(0, 0, 0);
+  board.balls.push_back(ballAt("B7", 10, 3.5, -48, 48));
+  board.balls.push_back(ballAt("B24", 7.75, 18.25));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G7", 6, 16, 90));
+  board.keyConnections.push_back(KeyConnectSpec{39, KeyDirection::Up, "G7", {}});
+  RunRequest run = ballisticRun(board, 0.05, 0.7299756008575122);
+  run.keys.push_back(TimedKey{0.45, 39, KeyDirection::Up});
+  expectModelsAgree(run);
+}
+
 // Campaign seed 271828182, case 1389, shrunk: a crowded board in which B41, struck by a flipper,
 // runs down an absorber's side at a tangent, 2.9e-14 L/s into it in the classic run, which
 // captures it, and exactly along it in the ballistic run.

@@ -15,8 +15,8 @@ inline GizmoSpec gizmoAt(GizmoType type, std::string name, int x, int y, int ori
   g.x = x;
   g.y = y;
   g.orientation = orientation;
-  g.width = type == GizmoType::LeftFlipper || type == GizmoType::RightFlipper ? 2 : w;
-  g.height = type == GizmoType::LeftFlipper || type == GizmoType::RightFlipper ? 2 : h;
+  g.width = ownSide(type) == 2 ? 2 : w;
+  g.height = ownSide(type) == 2 ? 2 : h;
   return g;
 }
 

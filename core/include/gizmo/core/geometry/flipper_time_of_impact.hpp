@@ -181,9 +181,18 @@ std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, cons
     // under it: the ball stays on the pivot's circle, which turns in place, and the side's bend
     // (its line turning into the ball) never reaches it. Counted, it struck a still ball off the
     // pivot at the minimum bounce as the flipper swung away (campaign seed 173205080, case 272).
+    // Nor is a side whose end leaves a ball sitting on it so near that end that the ball is off it,
+    // at the rate the end leaves, before the side presses into it by its position resolution:
+    // ½ p (along / rate)² ≤ resolution for the press p of the ball's acceleration and the side's
+    // bend. Counted, a ball 4.5e-14 L from the pivot end (50 ulps of rounding) was struck at the
+    // minimum bounce as the flipper swung away in the ballistic run, and not in the classic one,
+    // whose ball lay a hair nearer the end (seed 223606798, case 2158): the press would be 2e-27 L.
     const Real behindPivot = positionResolution(ball.p);
-    const bool endLeaving =
-        along < behindPivot && Real(dot(ball.v, u) + axis.omega * dot(q, Vec2<Real>(-u.y, u.x))) < Real(0);
+    const Real alongRate = dot(ball.v, u) + axis.omega * dot(q, Vec2<Real>(-u.y, u.x));
+    const Real press = -(dot(ball.a, touch.normal) + touch.bend);
+    const bool offBeforePressed =
+        Real(0) < press && Real(press * along * along) <= Real(Real(2) * behindPivot * alongRate * alongRate);
+    const bool endLeaving = alongRate < Real(0) && (along < behindPivot || offBeforePressed);
     touch.alongAxis = -behindPivot <= along && along <= axis.length && Real(0) <= across && !endLeaving;
   } else if (feature == 3) {
     const Vec2<Real> e = ball.p - (axis.pivot + axis.length * u);
