@@ -2,12 +2,12 @@
 // Left and right flippers (physics.md §2): a capsule that swings a quarter turn about its
 // pivot in exactly 1/12 s when triggered, reverses at once when triggered mid-swing, and
 // adds its surface speed to the balls it strikes.
-#include <algorithm>
-#include <limits>
+#include <optional>
 
 #include "gizmo/core/geometry/flipper_time_of_impact.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/grid_properties.hpp"
+#include "gizmo/core/gizmos/pinch_count.hpp"
 #include "gizmo/core/gizmos/shape_collisions.hpp"
 
 namespace gizmo {
@@ -183,8 +183,8 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
 
   void saveState(GizmoState<Real>& out) const override {
     out.reals.insert(out.reals.end(), {t0_, s0_});
-    out.ints.insert(out.ints.end(), {direction_, lastDirection_, blocked_, std::int64_t(hits_.size())});
-    for (const auto& [ball, count] : hits_) out.ints.insert(out.ints.end(), {ball, count});
+    out.ints.insert(out.ints.end(), {direction_, lastDirection_, blocked_});
+    pinch_.save(out);
   }
 
   void restoreState(GizmoStateReader<Real>& in, const GizmoIdCheck& ids) override {
@@ -193,13 +193,7 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     direction_ = static_cast<int>(in.integer(-1, 1));
     lastDirection_ = static_cast<int>(in.integer(-1, 1));
     blocked_ = in.flag();
-    const std::int64_t n = in.integer(0, 1 << 20);
-    hits_.clear();
-    for (std::int64_t k = 0; k < n; ++k) {
-      const std::int64_t ball = in.integer();
-      if (!ids.isBall(ball)) throw StateError("flipper hits: not a ball");
-      hits_.emplace_back(static_cast<GizmoId>(ball), static_cast<int>(in.integer(0, std::numeric_limits<int>::max())));
-    }
+    pinch_.restore(in, ids, "flipper");
     if (direction_ == 0) stillShape_ = shapeAt(s0_);
   }
 
@@ -217,7 +211,7 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
   void anchor(const Real& t, const Real& s, int direction) {
     // The pinch count is per swing; a swing that turns at the instant it began goes on with it
     // (those hits all happened at that instant), so a flipper reversed by each hit is blocked too.
-    if (!(t == t0_)) hits_.clear();
+    if (!(t == t0_)) pinch_.clear();
     t0_ = t;
     s0_ = s;
     if (direction_ != 0) lastDirection_ = direction_;
@@ -244,9 +238,7 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
   // A ball struck again and again in one swing is pinched against something: the flipper
   // stops where it is instead of pushing through it (docs/physics.md, the pinch rule).
   void countHit(GizmoId ball, BoardAccess<Real>& board) {
-    auto it = std::find_if(hits_.begin(), hits_.end(), [&](const auto& h) { return h.first == ball; });
-    if (it == hits_.end()) it = hits_.insert(hits_.end(), {ball, 0});
-    if (++it->second <= board.params().pinchLimit) return;
+    if (!pinch_.hit(ball, board.params().pinchLimit)) return;
     const Real& now = board.now();
     anchor(now, progressAt(now), 0);
     blocked_ = true;
@@ -260,7 +252,7 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
   int direction_ = 0;
   int lastDirection_ = 1;
   bool blocked_ = false;
-  std::vector<std::pair<GizmoId, int>> hits_;
+  PinchCount pinch_;
   Shape<Real> stillShape_;
 };
 

@@ -5,13 +5,12 @@
 // stops it where it stands (Spinner.java: the action negates the speed, and only a positive speed
 // turns). Turning, it is four arms that swing about the centre, each a capsule from the centre
 // like a flipper's from its pivot, so its times of impact are the flipper's certified search.
-#include <algorithm>
 #include <cstdint>
-#include <limits>
 
 #include "gizmo/core/geometry/flipper_time_of_impact.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/grid_properties.hpp"
+#include "gizmo/core/gizmos/pinch_count.hpp"
 #include "gizmo/core/gizmos/shape_collisions.hpp"
 
 namespace gizmo {
@@ -152,8 +151,8 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
 
   void saveState(GizmoState<Real>& out) const override {
     out.reals.insert(out.reals.end(), {t0_, phase_});
-    out.ints.insert(out.ints.end(), {quarter_, turning_, blocked_, std::int64_t(hits_.size())});
-    for (const auto& [ball, count] : hits_) out.ints.insert(out.ints.end(), {ball, count});
+    out.ints.insert(out.ints.end(), {quarter_, turning_, blocked_});
+    pinch_.save(out);
   }
 
   void restoreState(GizmoStateReader<Real>& in, const GizmoIdCheck& ids) override {
@@ -162,13 +161,7 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
     quarter_ = static_cast<int>(in.integer(0, 3));
     turning_ = in.flag();
     blocked_ = in.flag();
-    const std::int64_t n = in.integer(0, 1 << 20);
-    hits_.clear();
-    for (std::int64_t k = 0; k < n; ++k) {
-      const std::int64_t ball = in.integer();
-      if (!ids.isBall(ball)) throw StateError("spinner hits: not a ball");
-      hits_.emplace_back(static_cast<GizmoId>(ball), static_cast<int>(in.integer(0, std::numeric_limits<int>::max())));
-    }
+    pinch_.restore(in, ids, "spinner");
     if (!turning_) stillShape_ = shapeAt(phase_);
   }
 
@@ -208,7 +201,7 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
     const Turn turn = turnAt(now);
     // The pinch count is per turning: a spinner that stood still for a while starts afresh, one
     // stopped and started again at one instant (by its own hit and a connection to itself) does not.
-    if (!turning_ && !(t0_ == now)) hits_.clear();
+    if (!turning_ && !(t0_ == now)) pinch_.clear();
     blocked_ = false;
     board.releaseContactsOn(this->id());
     anchor(now, static_cast<int>((quarter_ + turn.quarters) % 4), turn.phase, !turning_);
@@ -226,9 +219,7 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
   // where it stands instead of pushing through it (the flipper's pinch rule, docs/physics.md).
   // True when it stopped.
   bool countHit(GizmoId ball, BoardAccess<Real>& board) {
-    auto it = std::find_if(hits_.begin(), hits_.end(), [&](const auto& h) { return h.first == ball; });
-    if (it == hits_.end()) it = hits_.insert(hits_.end(), {ball, 0});
-    if (++it->second <= board.params().pinchLimit) return false;
+    if (!pinch_.hit(ball, board.params().pinchLimit)) return false;
     board.reportRule(ModelRule::SpinnerBlocked, this->id(), ball);
     toggle(board);
     blocked_ = true;
@@ -240,7 +231,7 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
   int quarter_ = 0;
   bool turning_ = false;
   bool blocked_ = false;
-  std::vector<std::pair<GizmoId, int>> hits_;
+  PinchCount pinch_;
   Shape<Real> stillShape_;
 };
 
