@@ -258,6 +258,10 @@ int crosscheckCommand(const CrosscheckCommandOptions& o) {
   CheckedRun run;
   int code = kExitOk;
   if (!checkRun(o.run, "crosscheck", run, code)) return code;
+  if (const std::optional<std::string> why = verify::box2dCannotModel(run.request.board)) {
+    std::cerr << "gizmo crosscheck: " << *why << '\n';
+    return kExitBadInput;
+  }
   verify::CrosscheckOptions options;
   options.request = run.request;
   options.steps.clear();

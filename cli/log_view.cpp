@@ -14,7 +14,7 @@ using replay::DecisionView;
 
 std::string nameOf(const std::vector<std::string>& names, GizmoId id) {
   if (id >= 0 && std::size_t(id) < names.size()) return names[std::size_t(id)];
-  return "#" + std::to_string(id);
+  return id > 0 ? spawnedBallName(id, names) : "#" + std::to_string(id);
 }
 
 std::string number(const replay::Exact& x, bool exact) {

@@ -18,6 +18,7 @@ const char* drawingTypeName(GizmoType type) {
     case GizmoType::Sink: return "sink";
     case GizmoType::Portal: return "portal";
     case GizmoType::Spinner: return "spinner";
+    case GizmoType::Spawner: return "spawner";
   }
   return "square";
 }
@@ -52,6 +53,10 @@ BoardDrawing drawingOf(const BoardSpec& board) {
       d.length = kSpinnerArmLength;
       d.radius = kSpinnerArmRadius;
       d.rate = kSpinnerTurnRate;
+    } else if (g.type == GizmoType::Spawner) {
+      // Nothing meets it: its cell is drawn as an outline.
+      d.polygon = {Vec2<double>(g.x, g.y), Vec2<double>(g.x + 1, g.y), Vec2<double>(g.x + 1, g.y + 1),
+                   Vec2<double>(g.x, g.y + 1)};
     } else {
       // A polygon's vertices are its zero-radius corner circles, in the order of its edges.
       for (const CircleFeature<double>& corner : shape.circles) d.polygon.push_back(corner.centre);

@@ -117,7 +117,7 @@ std::string boardSvg(const BoardDrawing& board, const RunTrack* trace) {
                     " " + num(side) + "\">\n";
   svg +=
       "<style>.wall{fill:#10131a;stroke:#8a93a6;stroke-width:0.06}.square{fill:#d9534f}.triangle{fill:#3e7cd6}"
-      ".circle{fill:#3fae5a}.absorber{fill:#b05cc4}.booster{fill:#e0b830}.teleporter{fill:#2bb3c0}.portal{fill:#7b5cd6}.sink{fill:#55556a}.flipper{stroke:#f0a030;stroke-linecap:round}.spinner{stroke:#b388ff;stroke-linecap:round}"
+      ".circle{fill:#3fae5a}.absorber{fill:#b05cc4}.booster{fill:#e0b830}.teleporter{fill:#2bb3c0}.portal{fill:#7b5cd6}.sink{fill:#55556a}.flipper{stroke:#f0a030;stroke-linecap:round}.spinner{stroke:#b388ff;stroke-linecap:round}.spawner{fill:none;stroke:#7fa8c9;stroke-width:0.06;stroke-dasharray:0.15 0.1}"
       ".ball{fill:#f4f4f4;stroke:#222;stroke-width:0.03}.trace{fill:none;stroke:#ffd54a;stroke-width:0.04;"
       "stroke-linejoin:round;opacity:0.8}.hit{fill:#ff4040}</style>\n";
   svg += "<rect class=\"wall\" x=\"0\" y=\"0\" width=\"" + num(board.size) + "\" height=\"" + num(board.size) + "\"/>\n";

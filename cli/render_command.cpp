@@ -12,6 +12,7 @@
 #include "board_input.hpp"
 #include "crosscheck_command.hpp"
 #include "gizmo/io/board_writer.hpp"
+#include "gizmo/verify/box2d_mapping.hpp"
 #include "log_view.hpp"
 #include "render_board_svg.hpp"
 #include "render_output.hpp"
@@ -68,6 +69,7 @@ int box2dComparison(const replay::OpenedLog& log, const std::string& step, Compa
   if (!dt) return fail("--compare box2d:" + step + ": not a step size from 1e-5 to 0.1 s (a number or 1/N)");
   if (log.request.duration / *dt > kMaxBox2dSteps)
     return fail("--compare box2d:" + step + ": the log's run is too long for that step size (more than 1e7 Box2D steps)");
+  if (const std::optional<std::string> why = verify::box2dCannotModel(log.request.board)) return fail("--compare: " + *why);
   verify::Box2dOptions options;
   options.dt = *dt;
   const verify::RunRecord run = verify::runBox2d(log.request, options);

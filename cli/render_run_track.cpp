@@ -8,6 +8,7 @@
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/sink.hpp"
+#include "gizmo/core/gizmos/spawner.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
 #include <stdexcept>
 
@@ -48,7 +49,8 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
   // A spinner's turning as the player draws it: the seconds it has turned (its angle over its rate,
   // within a quarter turn, as the cross looks the same a quarter on), anchored at each action.
   std::map<GizmoId, std::vector<SwingAnchor>> spinners;
-  std::map<GizmoId, Vec2<double>> hold;
+  std::map<GizmoId, Vec2<double>> hold;  // where an absorber or a sink holds its balls
+  std::map<GizmoId, Vec2<double>> spawnAt;
   const std::vector<GizmoSpec>& specs = log.request.board.gizmos;
   for (std::size_t i = 0; i < specs.size(); ++i) {
     const GizmoId id = static_cast<GizmoId>(i + 1);  // 0 is the outer walls
@@ -58,6 +60,7 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     if (specs[i].type == GizmoType::Spinner) spinners[id] = {SwingAnchor{-1, 0, 0, 0}};
     if (specs[i].type == GizmoType::Absorber) hold[id] = Absorber<double>(specs[i]).holdPosition();
     if (specs[i].type == GizmoType::Sink) hold[id] = Sink<double>(specs[i]).centre();
+    if (specs[i].type == GizmoType::Spawner) spawnAt[id] = Spawner<double>(specs[i]).centre();
   }
   auto builderOf = [&](GizmoId id) -> BallPathBuilder* {
     const auto it = ballIndex.find(id);
@@ -122,6 +125,23 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
         if (d->rule == ModelRule::Teleported)
           if (const auto* t = dynamic_cast<const Teleporter<double>*>(&board->gizmo(d->gizmo))) teleported[d->other] = t;
         if (d->rule == ModelRule::FlipperBlocked && flippers.count(d->gizmo)) flippers[d->gizmo].blocked(event, now);
+        if (d->rule == ModelRule::Spawned && spawnAt.count(d->gizmo)) {
+          // A ball a sink held comes back; a new one starts its track here, at rest.
+          const Vec2<double> p = spawnAt[d->gizmo];
+          if (ball) {
+            ball->released(event, now, p, Vec2<double>());
+          } else if (d->other > 0) {
+            PathPiece start;
+            start.event = event;
+            start.t0 = now;
+            start.p = p;
+            start.a = track.model == MotionModel::Ballistic ? Vec2<double>(0, params.gravity) : Vec2<double>();
+            start.logged = true;
+            ballIndex[d->other] = builders.size();
+            builders.emplace_back(track.model, params, tolerance, start, false);
+            track.balls.push_back(BallTrack{d->other, spawnedBallName(d->other, log.gizmoNames), {}});
+          }
+        }
         // Every friction tick implies its friction rule: noting it would only repeat the event.
         if (d->rule != ModelRule::FrictionApplied) note(*d, d->gizmo, d->other);
         break;

@@ -170,6 +170,9 @@ EMSCRIPTEN_KEEPALIVE const char* gp_ball_names() {
   return say(names);
 }
 
+// How many balls the board has: spawners add balls as it runs.
+EMSCRIPTEN_KEEPALIVE double gp_ball_count() { return game ? double(game->board->ballIds().size()) : 0.0; }
+
 // x, y, vx, vy of each ball at the board's present: the doubles the simulator holds.
 EMSCRIPTEN_KEEPALIVE const double* gp_balls() {
   numbers.clear();

@@ -86,6 +86,17 @@ const BoardView = (function () {
       ctx.stroke();
       return;
     }
+    if (g.type === "spawner") {  // nothing meets it: an outline of its cell
+      ctx.strokeStyle = "#7fa8c9";
+      ctx.lineWidth = 0.06;
+      ctx.setLineDash([0.15, 0.1]);
+      ctx.beginPath();
+      g.polygon.forEach((p, i) => (i ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
+      ctx.closePath();
+      ctx.stroke();
+      ctx.setLineDash([]);
+      return;
+    }
     ctx.fillStyle = GIZMO_FILL[g.type] || "#888";
     ctx.beginPath();
     if (g.centre) ctx.arc(g.centre[0], g.centre[1], g.radius, 0, 2 * Math.PI);

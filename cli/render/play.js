@@ -98,6 +98,7 @@
   }
   function readBoard() {
     const m = game.module;
+    if (game.api.ballCount() !== game.names.length) game.names = game.api.names().split("\n").filter((s) => s);
     const n = game.names.length;
     const at = game.api.balls() >> 3;
     const balls = m.HEAPF64.subarray(at, at + 4 * n);
@@ -287,6 +288,7 @@
       text: m.cwrap("gp_text", "string", []),
       names: m.cwrap("gp_ball_names", "string", []),
       balls: m.cwrap("gp_balls", "number", []),
+      ballCount: m.cwrap("gp_ball_count", "number", []),
       swings: m.cwrap("gp_swings", "number", []),
       save: m.cwrap("gp_save", "number", []),
       saved: m.cwrap("gp_saved", "number", []),

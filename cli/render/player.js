@@ -116,8 +116,10 @@
   function pieceTime(run, ball, i) { const e = ball.event[i]; return e < 0 ? 0 : run.time[e]; }
 
   // The ball's position in the simulator's own operations (Trajectory::positionAt), so that a
-  // double run is drawn at exactly the positions it computed.
+  // double run is drawn at exactly the positions it computed. Null before a spawned ball exists:
+  // its first piece starts with the event that spawned it.
   function ballAt(run, ball, t, done) {
+    if (ball.event[0] >= done) return null;
     const i = Math.max(0, countAtMost(ball.event, ball.count, done - 1) - 1);
     const acc = run.accelerations[ball.a[i]];
     const tau = t - pieceTime(run, ball, i);
@@ -149,7 +151,13 @@
     return (n > 1 && Math.abs(n * dt - 1) < 1e-9 ? "1/" + n : num(dt)) + " s";
   }
   function short(x) { return (Math.abs(x) < 1e-12 ? 0 : x).toFixed(4); }
-  function gizmoName(run, id) { return id < 0 ? "none" : run.gizmoNames[id] || ("#" + id); }
+  // A spawned ball is not among the board's gizmos: its track has its name.
+  function gizmoName(run, id) {
+    if (id < 0) return "none";
+    if (run.gizmoNames[id]) return run.gizmoNames[id];
+    const ball = run.balls.find((b) => b.id === id);
+    return ball ? ball.name : "#" + id;
+  }
   function esc(s) { return String(s).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;"); }
 
   // ---- Colours --------------------------------------------------------------------------------
@@ -237,6 +245,7 @@
       run.balls.forEach((ball, b) => {
         drawTrail(ctx, run, ball, r, b);
         const at = ballAt(run, ball, state.t, done);
+        if (!at) return;
         BoardView.drawBall(ctx, board, at, b, r === 0 ? null : SECOND_RUN);
         if (r === 0) state.drawn.push({ name: ball.name, x: at.x, y: at.y, vx: at.vx, vy: at.vy });
       });
@@ -301,11 +310,14 @@
     const from = Math.max(0, state.t - TRAIL_SECONDS);
     if (state.t <= from) return;
     ctx.beginPath();
+    let drawn = false;
     for (let s = 0; s <= TRAIL_SAMPLES; s++) {
       const t = s === TRAIL_SAMPLES ? state.t : from + (state.t - from) * s / TRAIL_SAMPLES;
       const done = s === TRAIL_SAMPLES && r === 0 ? state.done : eventsBy(run, t);
       const at = ballAt(run, ball, t, done);
-      if (s) ctx.lineTo(at.x, at.y); else ctx.moveTo(at.x, at.y);
+      if (!at) continue;
+      if (drawn) ctx.lineTo(at.x, at.y); else ctx.moveTo(at.x, at.y);
+      drawn = true;
     }
     strokeTrail(ctx, ballColour(r, b), 0.35, 0.08);
   }

@@ -39,6 +39,7 @@ const char* gizmoTypeWord(GizmoType type) {
     case GizmoType::Sink: return "sink";
     case GizmoType::Portal: return "portal";
     case GizmoType::Spinner: return "spinner";
+    case GizmoType::Spawner: return "spawner";
   }
   return "gizmo";
 }

@@ -21,7 +21,7 @@ Exact exact(const Real& x) {
 
 std::string nameOf(const std::vector<std::string>& names, GizmoId id) {
   if (id >= 0 && std::size_t(id) < names.size()) return names[std::size_t(id)];
-  return id == kNoGizmo ? "" : "#" + std::to_string(id);
+  return id == kNoGizmo ? "" : id > 0 ? spawnedBallName(id, names) : "#" + std::to_string(id);
 }
 
 // A ball as an executed event left it: where it was hit, its velocity before and after.

@@ -22,3 +22,7 @@ gizmo_browser_test(classic_model
 gizmo_browser_test(box2d_overlay
   BOARD=${GIZMO_BROWSER_FIXTURES}/boards/spec-example.txt KEYS=${GIZMO_BROWSER_FIXTURES}/keys/flippers.keys
   TIME=6 PICK=5 TOLERANCE=0 COMPARE_DT=1/240 COMPARE_SAMPLE=300)
+# Spawners add balls as the run goes: each is drawn from the event that spawned it on, and not
+# before (the balls drawn are exactly the log's).
+gizmo_browser_test(spawned_balls
+  BOARD=${GIZMO_BROWSER_FIXTURES}/boards/gizmos/spawner.txt TIME=4 PICK=30 TOLERANCE=0)

@@ -2,11 +2,13 @@
 // merged shards equal to one run, results files that read back, and shrinking that ends small.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
 #include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/core/run/run.hpp"
 #include "gizmo/replay/replay.hpp"
 #include "gizmo/verify/fuzz/campaign.hpp"
 #include "gizmo/verify/fuzz/run_generator.hpp"
@@ -206,6 +208,25 @@ TEST(FuzzGenerator, PlacesNearDegenerateBalls) {
   }
   EXPECT_GT(resting, 20);
   EXPECT_GT(meeting, 20);
+}
+
+// The generator's spawners have keys, and their boards' runs do grow: the fuzz properties meet
+// spawned balls.
+TEST(FuzzGenerator, SpawnersAddBalls) {
+  int withSpawner = 0, grew = 0;
+  for (std::uint64_t seed = 0; seed < 400 && grew < 5; ++seed) {
+    const RunRequest run = generateRun(seed, 60);
+    const auto spawner = std::find_if(run.board.gizmos.begin(), run.board.gizmos.end(),
+                                      [](const GizmoSpec& g) { return g.type == GizmoType::Spawner; });
+    if (spawner == run.board.gizmos.end()) continue;
+    ++withSpawner;
+    EXPECT_TRUE(std::any_of(run.board.keyConnections.begin(), run.board.keyConnections.end(),
+                            [&](const KeyConnectSpec& k) { return k.target == spawner->name; }))
+        << "seed " << seed;
+    if (simulate<double>(run).balls.size() > run.board.balls.size()) ++grew;
+  }
+  EXPECT_GE(withSpawner, 5);
+  EXPECT_EQ(grew, 5) << "too few generated runs in which a spawner adds a ball";
 }
 
 }  // namespace

@@ -43,8 +43,8 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
       s.connections.push_back(ConnectSpec{g.name, s.gizmos[std::size_t(whole(0, int(s.gizmos.size()) - 1))].name, {}});
   }
   // Half the triangles are boosters, half the circles teleporters (each with an exit), a quarter of
-  // the squares sinks, a third of the teleporters portals (an exit cell anywhere) and a third of
-  // the flippers spinners, chosen by a stream of their own so that the other draws
+  // the squares sinks, a third of the teleporters portals (an exit cell anywhere), a third of the
+  // flippers spinners and a third of the sinks spawners, chosen by a stream of their own so that the other draws
   // stay as they were before the additions (docs/physics.md, "Gizmos other programs added").
   std::mt19937_64 own(seed ^ 0x6164646974696f6eULL);
   for (GizmoSpec& g : s.gizmos)
@@ -71,6 +71,8 @@ inline BoardSpec randomBoard(std::uint64_t seed) {
   for (GizmoSpec& g : s.gizmos)
     if ((g.type == GizmoType::LeftFlipper || g.type == GizmoType::RightFlipper) && own() % 3 == 0)
       g.type = GizmoType::Spinner;
+  for (GizmoSpec& g : s.gizmos)
+    if (g.type == GizmoType::Sink && own() % 3 == 0) g.type = GizmoType::Spawner;
   const int balls = whole(1, 12);
   for (int i = 0; i < balls; ++i) {
     BallSpec b;

@@ -33,6 +33,7 @@ class JammedBoard final : public BoardAccess<double> {
   bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return true; }
   bool cradled(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
   void performAction(GizmoId) override {}
+  GizmoId spawnBall(const Vec2<double>&) override { return kNoGizmo; }
 
   static std::array<Ball<double>, 3> ballsWith(Vec2<double> bVelocity) {
     return {Ball<double>("A", {10, 10}, {0, 0}), Ball<double>("B", {10.5, 10}, bVelocity),

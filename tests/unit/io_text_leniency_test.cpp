@@ -70,7 +70,7 @@ TEST(TextReaderLeniency, NamesGivenTwiceAreNumbered) {
 }
 
 TEST(TextReaderLeniency, AdditionsAreLeftOutByName) {
-  const ReadResult r = read("Square S 1 1\nDeathSquare K 5 5\nSpawner P 7 7\nConnect S K\nConnect K S\nKeyConnect key 32 down P\n"
+  const ReadResult r = read("Square S 1 1\nDeathSquare K 5 5\nGate P 7 7\nConnect S K\nConnect K S\nKeyConnect key 32 down P\n"
                             "Rotate P\ncolor S #ff0000\nMouseConnect left-click press S\n");
   EXPECT_EQ(r.board.gizmos.size(), 1u);
   EXPECT_TRUE(r.board.connections.empty());

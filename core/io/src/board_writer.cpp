@@ -38,6 +38,7 @@ const char* xmlElement(GizmoType t) {
     case GizmoType::Sink: return "sink";
     case GizmoType::Portal: return "portal";
     case GizmoType::Spinner: return "spinner";
+    case GizmoType::Spawner: return "spawner";
   }
   return "squareBumper";
 }
@@ -55,6 +56,7 @@ const char* textCommand(GizmoType t) {
     case GizmoType::Sink: return "Sink";
     case GizmoType::Portal: return "Portal";
     case GizmoType::Spinner: return "Spinner";
+    case GizmoType::Spawner: return "Spawner";
   }
   return "Square";
 }
@@ -92,6 +94,7 @@ std::string writeXmlBoard(const BoardSpec& board) {
       case GizmoType::Circle:
       case GizmoType::Teleporter:
       case GizmoType::Spinner:
+      case GizmoType::Spawner:
         if (g.orientation != 0) out += attr("orientation", std::to_string(g.orientation));
         break;
       default:

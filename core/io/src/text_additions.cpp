@@ -7,7 +7,6 @@ namespace {
 
 // SOURCES.md of the real-board collection (docs/board-files.md §2) says what each program does.
 constexpr Addition kAdditions[] = {
-    {"Spawner", AdditionKind::Gizmo, "a gizmo that adds a ball when triggered", "lheckemann/gizmoball"},
     {"LeftSpinningFlipper", AdditionKind::Gizmo, "a spinning flipper", "lheckemann/gizmoball"},
     {"RightSpinningFlipper", AdditionKind::Gizmo, "a spinning flipper", "lheckemann/gizmoball"},
     {"Accelerator", AdditionKind::Gizmo, "a bumper that speeds the ball up", "course variants"},

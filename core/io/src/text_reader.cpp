@@ -44,6 +44,7 @@ constexpr CommandInfo kCommands[] = {
     {"Sink", Cmd::Gizmo, GizmoType::Sink, 4, "Sink NAME X Y"},
     {"Portal", Cmd::Gizmo, GizmoType::Portal, 6, "Portal NAME X Y EXITX EXITY"},
     {"Spinner", Cmd::Gizmo, GizmoType::Spinner, 4, "Spinner NAME X Y"},
+    {"Spawner", Cmd::Gizmo, GizmoType::Spawner, 4, "Spawner NAME X Y"},
     {"Ball", Cmd::Ball, GizmoType::Square, 6, "Ball NAME X Y VX VY"},
     {"Rotate", Cmd::Rotate, GizmoType::Square, 2, "Rotate NAME"},
     {"Delete", Cmd::Delete, GizmoType::Square, 2, "Delete NAME"},

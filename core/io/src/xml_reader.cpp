@@ -68,6 +68,7 @@ constexpr GizmoElement kGizmoElements[] = {
     {"booster", GizmoType::Booster},       {"teleporter", GizmoType::Teleporter},
     {"sink", GizmoType::Sink},             {"portal", GizmoType::Portal},
     {"spinner", GizmoType::Spinner},
+    {"spawner", GizmoType::Spawner},
 };
 
 // " (did you mean <squareBumper>?)" when name differs from one of known only in case.

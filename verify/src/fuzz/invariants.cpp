@@ -81,6 +81,7 @@ InvariantChecker<Real>::InvariantChecker(const GameBoard<Real>& board, std::vect
     const AbstractGizmo<Real>& g = board.gizmo(GizmoId(i));
     if (g.asBall() || GizmoId(i) == board.outerWallsId()) continue;
     const GizmoSpec spec = g.spec();
+    if (spec.type == GizmoType::Spawner) continue;  // nothing meets it
     typename Geometry::Piece piece;
     piece.id = GizmoId(i);
     piece.type = spec.type;
@@ -257,6 +258,8 @@ void InvariantChecker<Real>::modelRuleApplied(const Real& time, ModelRule rule, 
     fired_.insert({gizmo, other});
     released_.push_back(other);
   }
+  // A spawned ball comes into play with all its energy, as a fired one does.
+  if (rule == ModelRule::Spawned) released_.push_back(other);
   // The documented minimum bounce: at most ½·restSpeed² per slow hit on something round.
   if (rule == ModelRule::MinimumBounce) allowance_ += params.restSpeed * params.restSpeed / Real(2);
   // A booster doubles the speed it reports, reported before it does: the kinetic energy ½|v|²
@@ -276,7 +279,7 @@ void InvariantChecker<Real>::checkEnergy(const Event<Real>& e, const EventOutcom
   const Real half = Real(1) / Real(2), g = params.gravity < Real(0) ? Real(-params.gravity) : params.gravity;
   const Real after = board_.energy();
   Real allowance = allowance_, scale = Real(1);
-  // An absorber shot supplies the released ball's whole energy (a captured ball has none).
+  // An absorber shot or a spawn supplies the released ball's whole energy (a captured ball has none).
   for (GizmoId id : released_) {
     const Ball<Real>& b = *board_.gizmo(id).asBall();
     const Vec2<Real> v = b.velocityAt(board_.now()), p = b.positionAt(board_.now());

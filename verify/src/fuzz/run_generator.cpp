@@ -62,9 +62,10 @@ struct Builder {
   // The additions of other programs (docs/physics.md, "Gizmos other programs added") take the
   // place of gizmos of the same outline: half the triangles become boosters, half the circles
   // teleporters, a quarter of the squares sinks, a third of the teleporters portals, each with
-  // an exit cell anywhere on the board, and a third of the flippers spinners (each drawn after the
-  // ones before, so that boards without squares, teleporters or flippers keep what came before;
-  // a spinner keeps the key connection its flipper was given). The choice is drawn
+  // an exit cell anywhere on the board, a third of the flippers spinners and a third of the sinks
+  // spawners (each drawn after the ones before, so that boards without squares, teleporters or
+  // flippers keep what came before; a spinner keeps the key connection its flipper was given, and
+  // a spawner is given one, so that it spawns). The choice is drawn
   // from a stream of its own, so that every other draw, and every board without a triangle,
   // stays what it was before the additions.
   void additions(std::uint64_t seed) {
@@ -92,6 +93,8 @@ struct Builder {
       }
     for (GizmoSpec& g : board.gizmos)
       if (isFlipper(g.type) && own.chance(3)) g.type = GizmoType::Spinner;
+    for (GizmoSpec& g : board.gizmos)
+      if (g.type == GizmoType::Sink && own.chance(3)) g.type = GizmoType::Spawner;
   }
 
   void connections() {
@@ -105,7 +108,8 @@ struct Builder {
                                        [&](const ConnectSpec& c) { return c.source == source && c.target == g.name; });
         if (!twice) board.connections.push_back(ConnectSpec{source, g.name, {}});
       }
-      if (rng.chance(3) || isFlipper(g.type) || g.type == GizmoType::Spinner) keyConnect(g.name, rng.whole(0, 1) ? KeyDirection::Down : KeyDirection::Up);
+      const bool keyed = isFlipper(g.type) || g.type == GizmoType::Spinner || g.type == GizmoType::Spawner;
+      if (rng.chance(3) || keyed) keyConnect(g.name, rng.whole(0, 1) ? KeyDirection::Down : KeyDirection::Up);
     }
   }
 

@@ -3,6 +3,7 @@
 // Readers produce it, writers consume it, and GameBoard is built from it. Numbers are doubles
 // because board files hold decimals; every scalar of the precision ladder starts from the exact
 // binary value of these doubles.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -11,7 +12,7 @@ namespace gizmo {
 // Booster and later entries: gizmos that other Gizmoball programs added (docs/physics.md,
 // "Gizmos other programs added").
 enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal,
-                       Spinner };
+                       Spinner, Spawner };
 enum class KeyDirection { Down, Up };
 
 // Where a statement came from in its file (1-based; 0 when it was not read from a file).
@@ -76,7 +77,24 @@ struct BoardSpec {
 };
 
 inline constexpr const char* kOuterWallsName = "OuterWalls";
+
+// The name of the ball that a spawner added to a board as it ran, as gizmo `id`: it follows from
+// the id and the names of the gizmos the board was built with (`names`, indexed by id), so that
+// whatever knows the board's names names the ball as the board does. A name the board already
+// has gets an underscore more (names stay [A-Za-z0-9_]+, so the writers write the board back).
+inline std::string spawnedBallName(long long id, const std::vector<std::string>& names) {
+  std::string name = "Spawned" + std::to_string(id);
+  auto taken = [&] {
+    for (const std::string& n : names)
+      if (n == name) return true;
+    return false;
+  };
+  while (taken()) name += "_";
+  return name;
+}
 inline constexpr double kBallRadius = 0.25;
+// The most balls a board holds: in its file, and as spawners add to it while it runs.
+inline constexpr std::size_t kMaxBalls = 10000;
 inline constexpr int kBoardSize = 20;
 
 }  // namespace gizmo

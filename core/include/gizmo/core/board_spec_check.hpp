@@ -18,7 +18,6 @@ struct SpecProblem {
   std::string message;  // plain words, no file name and no position prefix
 };
 
-inline constexpr std::size_t kMaxBalls = 10000;
 inline constexpr std::size_t kMaxGizmos = 10000;
 inline constexpr int kMaxKeyCode = 65535;
 // Limits on numbers that no board needs anywhere near: past them the simulator's arithmetic could

@@ -28,8 +28,10 @@ class DrivenBoardAccess final : public BoardAccess<double> {
   // Box2D moves the bodies: a teleporter is a circle bumper here, and says where the runs part.
   bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return false; }
   bool cradled(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
-  // Box2D's bridge drives flippers alone; a board with a spinner is refused before it gets here.
+  // Box2D's bridge drives flippers alone; a board with a spinner or a spawner is refused before
+  // it gets here.
   void performAction(GizmoId) override {}
+  GizmoId spawnBall(const Vec2<double>&) override { return kNoGizmo; }
 
  private:
   PhysicsParams<double> params_;

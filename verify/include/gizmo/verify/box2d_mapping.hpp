@@ -7,6 +7,7 @@
 // Box2D rounds every polygon and edge by a skin of b2_polygonRadius. The mapping insets each
 // polygon and moves each wall edge outwards by that skin, so that Box2D's faces lie exactly on
 // ours; only the corners differ (rounded with radius skin instead of sharp).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,7 +55,10 @@ struct Box2dBody {
   std::vector<Box2dPart> parts;
 };
 
-// The body of a gizmo (flippers at rest: the origin is the pivot, the axis along the body's +x).
+// Why the bridge cannot model the board, or nothing: the commands ask before they run Box2D.
+std::optional<std::string> box2dCannotModel(const BoardSpec& board);
+// The body of a gizmo (flippers at rest: the origin is the pivot, the axis along the body's +x);
+// std::invalid_argument for a gizmo the bridge cannot model.
 Box2dBody box2dBodyOf(const GizmoSpec& gizmo);
 // The four walls as edges on one static body.
 Box2dBody box2dOuterWalls();

@@ -5,6 +5,7 @@
 // restored onto a board built from the same spec.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -69,6 +70,11 @@ class GizmoStateReader {
     return v;
   }
   bool flag() { return integer(0, 1) != 0; }
+  // The next integer, or nothing at the end of them (a list that runs to the end of the state).
+  std::optional<std::int64_t> optionalInteger() {
+    if (i_ >= s_.ints.size()) return std::nullopt;
+    return s_.ints[i_++];
+  }
   void expectEnd() const {
     if (r_ != s_.reals.size() || i_ != s_.ints.size()) throw StateError("gizmo state: unexpected extra values");
   }

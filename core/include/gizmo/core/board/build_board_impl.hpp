@@ -8,6 +8,7 @@
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/polygonal_gizmo.hpp"
 #include "gizmo/core/gizmos/sink.hpp"
+#include "gizmo/core/gizmos/spawner.hpp"
 #include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
 
@@ -43,6 +44,9 @@ std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams
         break;
       case GizmoType::Spinner:
         board->add(std::make_unique<Spinner<Real>>(g));
+        break;
+      case GizmoType::Spawner:
+        board->add(std::make_unique<Spawner<Real>>(g));
         break;
       case GizmoType::Absorber: {
         auto a = std::make_unique<Absorber<Real>>(g);

@@ -128,7 +128,14 @@ class GameBoard final : private BoardAccess<Real> {
   bool roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const override;
   bool cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const override;
   bool jammed() const override { return collisionsInWindow_ > kJamThreshold; }
+  GizmoId spawnBall(const Vec2<Real>& p) override;
 
+  GizmoId join(std::unique_ptr<AbstractGizmo<Real>> gizmo);
+  // Spawned balls come after every gizmo the board was built with (ids never move): a state
+  // with more or fewer of them than the board has now sets the count before it is restored.
+  void setSpawnedCount(std::size_t count);
+  GizmoId addSpawnedBall(const Vec2<Real>& p);
+  void formColliders(std::size_t known);
   void rebuild();
   void checkRestoredEvent(const Event<Real>& e, const BoardState<Real>& state) const;
   bool isGizmoId(std::int64_t id) const { return id >= 0 && std::uint64_t(id) < gizmos_.size(); }
@@ -161,6 +168,7 @@ class GameBoard final : private BoardAccess<Real> {
   Real now_{0};
   std::vector<std::unique_ptr<AbstractGizmo<Real>>> gizmos_;
   std::vector<GizmoId> balls_;
+  std::size_t spawned_ = 0;  // the last gizmos: balls that spawners added as the board ran
   std::vector<std::vector<GizmoId>> triggerTargets_;  // by source gizmo
   std::map<std::pair<int, int>, std::vector<GizmoId>> keyTargets_;  // (key, direction) → targets
   struct PendingInput {

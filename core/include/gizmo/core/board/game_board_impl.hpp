@@ -98,12 +98,64 @@ Real GameBoard<Real>::infinity() const {
 
 template <class Real>
 GizmoId GameBoard<Real>::add(std::unique_ptr<AbstractGizmo<Real>> gizmo) {
+  if (spawned_ > 0) throw std::logic_error("a board that has spawned balls takes no more gizmos");
+  built_ = false;
+  return join(std::move(gizmo));
+}
+
+template <class Real>
+GizmoId GameBoard<Real>::join(std::unique_ptr<AbstractGizmo<Real>> gizmo) {
   const GizmoId id = static_cast<GizmoId>(gizmos_.size());
   gizmo->setId(id);
   if (gizmo->asBall()) balls_.push_back(id);
   gizmos_.push_back(std::move(gizmo));
   triggerTargets_.emplace_back();
+  return id;
+}
+
+template <class Real>
+GizmoId GameBoard<Real>::addSpawnedBall(const Vec2<Real>& p) {
+  std::vector<std::string> names;
+  for (std::size_t g = 0; g < gizmos_.size() - spawned_; ++g) names.push_back(gizmos_[g]->name());
+  auto ball = std::make_unique<Ball<Real>>(spawnedBallName(static_cast<long long>(gizmos_.size()), names), p, Vec2<Real>());
+  ball->setState(now_, p, Vec2<Real>(), params_);
+  ++spawned_;
+  return join(std::move(ball));
+}
+
+template <class Real>
+void GameBoard<Real>::setSpawnedCount(std::size_t count) {
+  while (spawned_ > count) {
+    gizmos_.pop_back();
+    balls_.pop_back();
+    triggerTargets_.pop_back();
+    --spawned_;
+  }
+  while (spawned_ < count) addSpawnedBall(Vec2<Real>());
   built_ = false;
+}
+
+template <class Real>
+GizmoId GameBoard<Real>::spawnBall(const Vec2<Real>& p) {
+  for (auto& g : gizmos_) {
+    const GizmoId id = g->handBackRetiredBall();
+    if (id == kNoGizmo) continue;
+    ballById(id).release(now_, p, Vec2<Real>(), params_);
+    markForRecompute(id);
+    return id;
+  }
+  if (balls_.size() >= kMaxBalls) return kNoGizmo;
+  // A new ball: the per-gizmo tables grow by one, the predictions made so far stand.
+  const GizmoId id = addSpawnedBall(p);
+  const std::size_t n = gizmos_.size();
+  ballIndex_.push_back(std::int32_t(balls_.size() - 1));
+  formColliders(n - 1);
+  ballCells_.push_back(CellRange{0, -1, 0, -1});
+  boxes_.push_back(gizmos_.back()->bounds());
+  validUntil_.push_back(infinity());
+  stamp_.push_back(0);
+  candidateSet_.reset(n);
+  markForRecompute(id);
   return id;
 }
 
@@ -200,6 +252,27 @@ std::vector<CollisionPair> GameBoard<Real>::collisionPairs() {
   return pairs;
 }
 
+// Each pair's collider is fixed: asked in id order, the first gizmo that can collide.
+// The table is formed for the gizmos from `known` on; the rows and columns of those before it
+// are kept (a spawned ball adds a row and a column, and the table's width changes with it).
+template <class Real>
+void GameBoard<Real>::formColliders(std::size_t known) {
+  const std::size_t n = gizmos_.size();
+  std::vector<Collider> table(balls_.size() * n, Collider::None);
+  for (std::size_t i = 0; i < balls_.size() && std::size_t(balls_[i]) < known; ++i)
+      std::copy_n(colliders_.begin() + std::ptrdiff_t(i * known), known, table.begin() + std::ptrdiff_t(i * n));
+  colliders_.swap(table);
+  for (std::size_t i = 0; i < balls_.size(); ++i)
+    for (std::size_t g = 0; g < n; ++g) {
+      const std::size_t b = static_cast<std::size_t>(balls_[i]);
+      if (g == b || (g < known && b < known)) continue;
+      const std::size_t lo = std::min(g, b), hi = std::max(g, b);
+      const PairRole r = formPair(*gizmos_[lo], *gizmos_[hi]);
+      if (r == PairRole::None) continue;
+      colliders_[i * n + g] = (r == PairRole::FirstCollides ? lo : hi) == b ? Collider::Ball : Collider::Other;
+    }
+}
+
 // Forms the pairs and the broad-phase grid, and predicts everything afresh.
 template <class Real>
 void GameBoard<Real>::rebuild() {
@@ -207,17 +280,7 @@ void GameBoard<Real>::rebuild() {
   const std::size_t n = gizmos_.size();
   ballIndex_.assign(n, -1);
   for (std::size_t i = 0; i < balls_.size(); ++i) ballIndex_[static_cast<std::size_t>(balls_[i])] = std::int32_t(i);
-  // Each pair's collider is fixed: asked in id order, the first gizmo that can collide.
-  colliders_.assign(balls_.size() * n, Collider::None);
-  for (std::size_t i = 0; i < balls_.size(); ++i)
-    for (std::size_t g = 0; g < n; ++g) {
-      const std::size_t b = static_cast<std::size_t>(balls_[i]);
-      if (g == b) continue;
-      const std::size_t lo = std::min(g, b), hi = std::max(g, b);
-      const PairRole r = formPair(*gizmos_[lo], *gizmos_[hi]);
-      if (r == PairRole::None) continue;
-      colliders_[i * n + g] = (r == PairRole::FirstCollides ? lo : hi) == b ? Collider::Ball : Collider::Other;
-    }
+  formColliders(0);
   for (auto& cell : grid_) cell.clear();
   for (auto& cell : ballGrid_) cell.clear();
   wideBalls_.clear();

@@ -19,9 +19,11 @@ enum class ModelRule : std::uint8_t {
   Teleported,        // a teleporter moved a ball to its exit
   Sunk,              // a sink took a ball out of play
   SpinnerBlocked,    // a spinner pinching a ball stops where it stands
+  Spawned,           // a spawner put a ball at its centre (the other gizmo: that ball)
+  SpawnBlocked,      // a spawner acted with no room at its centre, or no ball to be had
 };
 // The last rule: a log's rule value above it is refused.
-inline constexpr ModelRule kLastModelRule = ModelRule::SpinnerBlocked;
+inline constexpr ModelRule kLastModelRule = ModelRule::SpawnBlocked;
 
 inline std::string_view modelRuleName(ModelRule r) {
   switch (r) {
@@ -38,6 +40,8 @@ inline std::string_view modelRuleName(ModelRule r) {
     case ModelRule::Teleported: return "teleported";
     case ModelRule::Sunk: return "sunk";
     case ModelRule::SpinnerBlocked: return "spinner-blocked";
+    case ModelRule::Spawned: return "spawned";
+    case ModelRule::SpawnBlocked: return "spawn-blocked";
   }
   return "?";
 }

@@ -120,6 +120,8 @@ Shape<Real> restShape(const GizmoSpec& g) {
     case GizmoType::Absorber:
       addPolygon(s, {at(0, 0), at(g.width, 0), at(g.width, g.height), at(0, g.height)});
       break;
+    case GizmoType::Spawner:  // nothing meets it: balls pass through its cell
+      break;
     case GizmoType::Spinner: {
       // A cross looks the same turned by any whole quarter: the orientation changes nothing.
       addSpinnerCross(s, at(1, 1), Vec2<Real>(Real(1), Real(0)));

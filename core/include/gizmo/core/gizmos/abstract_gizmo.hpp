@@ -21,7 +21,8 @@ namespace gizmo {
 enum class CollisionAnswer { CanCollide, Defer, NeverCollides };
 
 enum class GizmoKind {
-  Ball, OuterWalls, Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal, Spinner
+  Ball, OuterWalls, Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal, Spinner,
+  Spawner
 };
 
 template <class Real> class Ball;
@@ -61,7 +62,13 @@ class BoardAccess {
   // Gizmo `target` performs its action now, as a trigger would make it, and the log records it
   // as an action (a gizmo that acts on its own hits, like the spinner).
   virtual void performAction(GizmoId target) = 0;
+  // A ball put at rest with its centre at p now, for a spawner: one that a gizmo took
+  // out of play for good comes back (handBackRetiredBall below, asked in id order); else a new
+  // ball joins the board, unless it holds kMaxBalls already. Its id, or kNoGizmo when no ball
+  // could be had. The caller has checked that p has room.
+  virtual GizmoId spawnBall(const Vec2<Real>& p) = 0;
 };
+
 
 template <class Real>
 class AbstractGizmo {
@@ -121,6 +128,10 @@ class AbstractGizmo {
   // still shape that only reflects. None for a gizmo that moves, captures, boosts or sends the
   // ball elsewhere, and for a ball.
   virtual const Shape<Real>* restingShape() const { return nullptr; }
+
+  // A ball this gizmo took out of play for good (a sink's), the one it took first, handed back to
+  // the board to be spawned again: kNoGizmo when it holds none. The gizmo forgets it.
+  virtual GizmoId handBackRetiredBall() { return kNoGizmo; }
 
   // Everything the gizmo can ever touch, for the broad phase.
   virtual Box<Real> bounds() const = 0;
