@@ -67,6 +67,9 @@ INSTANTIATE_TEST_SUITE_P(
                       FixtureCase{"boards/gizmos/triangle-180.txt", MotionModel::Ballistic, 10},
                       FixtureCase{"boards/gizmos/booster.txt", MotionModel::Ballistic, 10},
                       FixtureCase{"boards/gizmos/sink.txt", MotionModel::Ballistic, 10},
+                      // Balls spawned as it runs join the certifier's layout.
+                      FixtureCase{"boards/gizmos/spawner.txt", MotionModel::Ballistic, 10},
+                      FixtureCase{"boards/gizmos/spawner.txt", MotionModel::Classic, 10},
                       FixtureCase{"boards/gizmos/portal.txt", MotionModel::Classic, 10}));
 
 // The spec example swings its flippers whenever a circle is hit; the decisions next to a

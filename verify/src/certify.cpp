@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/polygonal_gizmo.hpp"
@@ -138,6 +137,11 @@ class CertifyingObserver final : public BoardObserver<double> {
  private:
   void takeSnapshot() {
     snapshotTaken_ = true;
+    // A spawner added a ball: it joins the layout (ids never move, so the rest is as it was).
+    if (board_.gizmoCount() != layout_.gizmos.size()) {
+      layout_ = layoutOf(board_);
+      ladder_.layoutChanged();
+    }
     BoardSnapshot& s = snapshot_;
     s.now = board_.now();
     s.balls.resize(layout_.balls.size());
@@ -324,11 +328,9 @@ class CertifyingObserver final : public BoardObserver<double> {
 CertifyReport certifyRun(const RunRequest& request, const CertifyOptions& options) {
   // The ladder re-derives each decision from the shapes it knows; a turning cross is not one of
   // them yet, and a decision certified without it would claim what was never checked.
-  // Nor does it follow a board whose balls a spawner adds to as it runs.
   for (const GizmoSpec& g : request.board.gizmos)
-    if (g.type == GizmoType::Spinner || g.type == GizmoType::Spawner)
-      throw CertifyError(std::string("certified decisions do not cover the ") + gizmoTypeWord(g.type) + " '" + g.name +
-                         "' yet");
+    if (g.type == GizmoType::Spinner)
+      throw CertifyError("certified decisions do not cover the spinner '" + g.name + "' yet");
   CertifyReport report;
   std::unique_ptr<GameBoard<double>> board = prepareRun<double>(request);
   CertifyingObserver observer(*board, options, report);

@@ -34,6 +34,8 @@ Ladder::Ladder(const BoardLayout& layout, const CertifyOptions& options)
     : layout_(layout), options_(options), fast_(std::make_unique<Fast>(layout)) {}
 Ladder::~Ladder() = default;
 
+void Ladder::layoutChanged() { fast_ = std::make_unique<Fast>(layout_); }
+
 LadderResult Ladder::settle(const BoardSnapshot& snapshot, const DecisionInput& input) {
   LadderResult result;
   {

@@ -28,6 +28,9 @@ class Ladder {
   Ladder& operator=(const Ladder&) = delete;
 
   LadderResult settle(const BoardSnapshot& snapshot, const DecisionInput& input);
+  // The layout it was built on has changed (a spawner added a ball): the deciders built from it
+  // are built again.
+  void layoutChanged();
 
  private:
   // Whether the exact step proves `outcome` (undecided) a tie; it is then replaced by the tie.
