@@ -126,6 +126,24 @@ TEST(Spawner, SavedStatesCarryTheSpawnedBalls) {
   EXPECT_EQ(positions(*original), expected);
 }
 
+// Fired by every hit on the walls, the spawner's balls make more hits and more balls: it adds
+// kMaxSpawnedBalls and no more, and says so each time after.
+TEST(Spawner, AddsAtMostItsLimitOfNewBalls) {
+  BoardSpec spec = keyedSpawner(25);
+  spec.connections.push_back(ConnectSpec{kOuterWallsName, "P", {}});
+  spec.balls.push_back(ballAt("B", 2, 2, 20, 0));
+  auto board = build(spec);
+  Recorder<double> rec;
+  board->setObserver(&rec);
+  for (int second = 0; second < 120 && board->ballIds().size() <= kMaxSpawnedBalls; ++second) board->tick(1);
+  ASSERT_EQ(board->ballIds().size(), 1 + kMaxSpawnedBalls);
+  const std::size_t blocked = count(rec, ModelRule::SpawnBlocked);
+  board->tick(2);
+  EXPECT_EQ(board->ballIds().size(), 1 + kMaxSpawnedBalls);
+  EXPECT_EQ(count(rec, ModelRule::Spawned), kMaxSpawnedBalls);
+  EXPECT_GT(count(rec, ModelRule::SpawnBlocked), blocked);
+}
+
 TEST(Spawner, ABoardWithoutOneRefusesAStateWithSpawnedBalls) {
   auto spawning = build(keyedSpawner(25));
   spawning->scheduleInput(0.1, 32, KeyDirection::Down);

@@ -93,8 +93,14 @@ inline std::string spawnedBallName(long long id, const std::vector<std::string>&
   return name;
 }
 inline constexpr double kBallRadius = 0.25;
-// The most balls a board holds: in its file, and as spawners add to it while it runs.
+// The most balls a board file may hold.
 inline constexpr std::size_t kMaxBalls = 10000;
+// The most new balls spawners add to a board as it runs (balls a sink gives back do not count).
+// Where spawners fire on hits that the spawned balls make (the walls connected to a spawner),
+// the balls multiply: a generated board's run took 25 CPU minutes and 3 GB, unfinished, on its
+// way to 10,000. Each new ball costs a row and a column of the pairs table and a place in every
+// broad phase; 256 keep the largest boards here within a few times their built size.
+inline constexpr std::size_t kMaxSpawnedBalls = 256;
 inline constexpr int kBoardSize = 20;
 
 }  // namespace gizmo

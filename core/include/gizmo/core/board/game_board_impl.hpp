@@ -144,7 +144,7 @@ GizmoId GameBoard<Real>::spawnBall(const Vec2<Real>& p) {
     markForRecompute(id);
     return id;
   }
-  if (balls_.size() >= kMaxBalls) return kNoGizmo;
+  if (spawned_ >= kMaxSpawnedBalls) return kNoGizmo;
   // A new ball: the per-gizmo tables grow by one, the predictions made so far stand.
   const GizmoId id = addSpawnedBall(p);
   const std::size_t n = gizmos_.size();

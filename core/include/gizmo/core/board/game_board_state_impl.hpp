@@ -74,14 +74,14 @@ void GameBoard<Real>::restoreState(const BoardState<Real>& s) {
   // The pairs and the grid come from the spec; the predictions made now are replaced below.
   // Balls spawned as the board ran are part of the state: the count of gizmos past the built
   // ones says how many there were, and only a board with a spawner can have any.
-  const std::size_t built = gizmos_.size() - spawned_, builtBalls = balls_.size() - spawned_;
+  const std::size_t built = gizmos_.size() - spawned_;
   if (s.gizmos.size() < built || s.boxes.size() != s.gizmos.size() || s.validUntil.size() != s.gizmos.size())
     throw StateError("the state is of a board with " + std::to_string(s.gizmos.size()) + " gizmos, this one has " +
                      std::to_string(built));
   const std::size_t spawned = s.gizmos.size() - built;
   const bool spawner =
       std::any_of(gizmos_.begin(), gizmos_.end(), [](const auto& g) { return g->kind() == GizmoKind::Spawner; });
-  if (spawned > 0 && (!spawner || builtBalls + spawned > kMaxBalls))
+  if (spawned > 0 && (!spawner || spawned > kMaxSpawnedBalls))
     throw StateError("the state has " + std::to_string(spawned) + " spawned balls, more than this board can have");
   if (spawned != spawned_) setSpawnedCount(spawned);
   BoardObserver<Real>* const observer = observer_;

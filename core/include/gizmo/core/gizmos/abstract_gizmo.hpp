@@ -64,7 +64,7 @@ class BoardAccess {
   virtual void performAction(GizmoId target) = 0;
   // A ball put at rest with its centre at p now, for a spawner: one that a gizmo took
   // out of play for good comes back (handBackRetiredBall below, asked in id order); else a new
-  // ball joins the board, unless it holds kMaxBalls already. Its id, or kNoGizmo when no ball
+  // ball joins the board, unless spawners have added kMaxSpawnedBalls already. Its id, or kNoGizmo when no ball
   // could be had. The caller has checked that p has room.
   virtual GizmoId spawnBall(const Vec2<Real>& p) = 0;
 };
