@@ -476,5 +476,23 @@ TEST(FuzzRegressions, ABallBouncingBesideAFlippersPivotDoesNotGrazeItsWayIn) {
   expectInvariantsInBothModels(run);
 }
 
+// Campaign seed 244948974, case 2066, shrunk: a ball on a swinging flipper's pivot end beside a
+// still spinner that the flipper's hits toggle. Each toggle woke the ball resting against the
+// spinner, the flipper struck it again at that instant, its trigger toggled the spinner again: a
+// million events at t = 0.26404. A spinner that stops holds nothing up, so it wakes nothing.
+TEST(FuzzRegressions, ASpinnerToggledByEveryHitNearItDoesNotStall) {
+  BoardSpec board = test::emptyBoard(25, 0, 0);
+  board.balls.push_back(ballAt("B15", 12.25, 14.75));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G0", 12, 15, 270, 2, 2));
+  board.gizmos.push_back(gizmoAt(GizmoType::Spinner, "G2", 10, 15, 0, 2, 2));
+  board.connections.push_back(ConnectSpec{"G0", "G2", {}});
+  board.keyConnections.push_back(KeyConnectSpec{39, KeyDirection::Down, "G0", {}});
+  RunRequest run = ballisticRun(board, 0.05, 2);
+  run.keys.push_back(TimedKey{0.25, 39, KeyDirection::Down});
+  const InvariantRun checked = checkInvariants<double>(run, {std::begin(kAllInvariants), std::end(kAllInvariants)});
+  EXPECT_TRUE(checked.violations.empty()) << firstViolation(checked);
+  expectModelsAgree(run);
+}
+
 }  // namespace
 }  // namespace gizmo::verify::fuzz

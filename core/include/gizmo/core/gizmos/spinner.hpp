@@ -203,7 +203,11 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
     // stopped and started again at one instant (by its own hit and a connection to itself) does not.
     if (!turning_ && !(t0_ == now)) pinch_.clear();
     blocked_ = false;
-    board.releaseContactsOn(this->id());
+    // Starting, it may push what lay against it. Stopping, it held nothing up (a turning spinner
+    // is no surface to rest or slide on), so nothing wakes: balls woken by every toggle at one
+    // instant were struck again at that instant by what they rested on, whose trigger toggled it
+    // again, a million times (campaign seed 244948974, case 2066).
+    if (!turning_) board.releaseContactsOn(this->id());
     anchor(now, static_cast<int>((quarter_ + turn.quarters) % 4), turn.phase, !turning_);
     board.markForRecompute(this->id());
   }
