@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The play page's tests in headless Chromium (docs/play.md): writes the page of the spec example
-# (flippers and an absorber) and of the crowded board (100 balls) with BUILD_DIR's gizmo and the
+# (flippers and an absorber), of the crowded board (100 balls) and of the spawners' board (balls
+# added as it plays) with BUILD_DIR's gizmo and the
 # play module of WASM_BUILD_DIR, plays each with real key events (play_game.mjs) and replays the
 # saved logs natively. Installs chromium and chromium-driver when missing. Usage:
 #   tests/browser/play/run.sh [BUILD_DIR [WASM_BUILD_DIR]]   (defaults: build/release, build/cross-wasm32)
@@ -27,3 +28,5 @@ play_case() {  # NAME BOARD SCENARIO
 }
 play_case spec_example_keys fixtures/boards/spec-example.txt keys
 play_case crowded_30s fixtures/boards/play/crowded-100-balls.txt crowded
+# Spawners: each space bar press adds a ball, and a sink feeds a ball back; the game's balls grow.
+play_case spawner_keys fixtures/boards/gizmos/spawner.txt keys
