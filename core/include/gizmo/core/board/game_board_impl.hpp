@@ -260,7 +260,7 @@ void GameBoard<Real>::formColliders(std::size_t known) {
   const std::size_t n = gizmos_.size();
   std::vector<Collider> table(balls_.size() * n, Collider::None);
   for (std::size_t i = 0; i < balls_.size() && std::size_t(balls_[i]) < known; ++i)
-      std::copy_n(colliders_.begin() + std::ptrdiff_t(i * known), known, table.begin() + std::ptrdiff_t(i * n));
+    std::copy_n(colliders_.begin() + std::ptrdiff_t(i * known), known, table.begin() + std::ptrdiff_t(i * n));
   colliders_.swap(table);
   for (std::size_t i = 0; i < balls_.size(); ++i)
     for (std::size_t g = 0; g < n; ++g) {
