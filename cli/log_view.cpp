@@ -12,11 +12,6 @@ namespace {
 using replay::DecisionType;
 using replay::DecisionView;
 
-std::string nameOf(const std::vector<std::string>& names, GizmoId id) {
-  if (id >= 0 && std::size_t(id) < names.size()) return names[std::size_t(id)];
-  return id > 0 ? spawnedBallName(id, names) : "#" + std::to_string(id);
-}
-
 std::string number(const replay::Exact& x, bool exact) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", x.value);
@@ -41,8 +36,8 @@ std::string decisionLine(const DecisionView& d, const std::vector<std::string>& 
         line += std::string(d.b ? " up " : " down ") + std::to_string(d.feature);
         break;
       }
-      if (d.a != kNoGizmo) line += " " + nameOf(names, d.a);
-      if (d.b != kNoGizmo) line += " " + nameOf(names, d.b);
+      if (d.a != kNoGizmo) line += " " + replay::gizmoName(names, d.a);
+      if (d.b != kNoGizmo) line += " " + replay::gizmoName(names, d.b);
       if (d.kind == EventKind::Collision) line += " feature " + std::to_string(d.feature);
       if (d.type == DecisionType::Executed) line += " (event " + std::to_string(d.eventIndex) + ")";
       for (const replay::BallView& b : d.balls)
@@ -50,14 +45,14 @@ std::string decisionLine(const DecisionView& d, const std::vector<std::string>& 
                 number(b.vxBefore, exact) + ", " + number(b.vyBefore, exact) + ") -> (" + number(b.vx, exact) + ", " +
                 number(b.vy, exact) + ")";
       break;
-    case DecisionType::Trigger: line += " " + nameOf(names, d.gizmo) + " -> " + nameOf(names, d.other); break;
-    case DecisionType::Action: line += " " + nameOf(names, d.gizmo); break;
+    case DecisionType::Trigger: line += " " + replay::gizmoName(names, d.gizmo) + " -> " + replay::gizmoName(names, d.other); break;
+    case DecisionType::Action: line += " " + replay::gizmoName(names, d.gizmo); break;
     case DecisionType::Input:
       line += std::string(d.direction == KeyDirection::Up ? " up " : " down ") + std::to_string(d.key);
       break;
     case DecisionType::Rule:
-      line += " " + std::string(modelRuleName(d.rule)) + " " + nameOf(names, d.gizmo);
-      if (d.other != kNoGizmo) line += " " + nameOf(names, d.other);
+      line += " " + std::string(modelRuleName(d.rule)) + " " + replay::gizmoName(names, d.gizmo);
+      if (d.other != kNoGizmo) line += " " + replay::gizmoName(names, d.other);
       break;
     case DecisionType::Tick:
     case DecisionType::Time: break;
@@ -79,8 +74,8 @@ nlohmann::ordered_json decisionJson(const DecisionView& d, const std::vector<std
         j["direction"] = d.b ? "up" : "down";
         break;
       }
-      if (d.a != kNoGizmo) j["a"] = nameOf(names, d.a);
-      if (d.b != kNoGizmo) j["b"] = nameOf(names, d.b);
+      if (d.a != kNoGizmo) j["a"] = replay::gizmoName(names, d.a);
+      if (d.b != kNoGizmo) j["b"] = replay::gizmoName(names, d.b);
       if (d.kind == EventKind::Collision) j["feature"] = d.feature;
       if (d.type == DecisionType::Executed) {
         j["event"] = d.eventIndex;
@@ -98,18 +93,18 @@ nlohmann::ordered_json decisionJson(const DecisionView& d, const std::vector<std
       break;
     }
     case DecisionType::Trigger:
-      j["source"] = nameOf(names, d.gizmo);
-      j["target"] = nameOf(names, d.other);
+      j["source"] = replay::gizmoName(names, d.gizmo);
+      j["target"] = replay::gizmoName(names, d.other);
       break;
-    case DecisionType::Action: j["target"] = nameOf(names, d.gizmo); break;
+    case DecisionType::Action: j["target"] = replay::gizmoName(names, d.gizmo); break;
     case DecisionType::Input:
       j["key"] = d.key;
       j["direction"] = d.direction == KeyDirection::Up ? "up" : "down";
       break;
     case DecisionType::Rule:
       j["rule"] = modelRuleName(d.rule);
-      j["gizmo"] = nameOf(names, d.gizmo);
-      if (d.other != kNoGizmo) j["other"] = nameOf(names, d.other);
+      j["gizmo"] = replay::gizmoName(names, d.gizmo);
+      if (d.other != kNoGizmo) j["other"] = replay::gizmoName(names, d.other);
       break;
     case DecisionType::Tick:
     case DecisionType::Time: break;

@@ -19,16 +19,11 @@ Exact exact(const Real& x) {
   return Exact{toDouble(x), exactText(x)};
 }
 
-std::string nameOf(const std::vector<std::string>& names, GizmoId id) {
-  if (id >= 0 && std::size_t(id) < names.size()) return names[std::size_t(id)];
-  return id == kNoGizmo ? "" : id > 0 ? spawnedBallName(id, names) : "#" + std::to_string(id);
-}
-
 // A ball as an executed event left it: where it was hit, its velocity before and after.
 template <class Real>
 BallView ballView(const BallChange<Real>& c, const std::vector<std::string>& names) {
   return BallView{c.ball,
-                  nameOf(names, c.ball),
+                  gizmoName(names, c.ball),
                   exact(c.position.x),
                   exact(c.position.y),
                   exact(c.velocityAfter.x),
@@ -160,12 +155,12 @@ StateView stateOf(const GameBoard<Real>& board, const Real& at, const std::vecto
   for (GizmoId id : board.ballIds()) {
     const Ball<Real>& b = *board.gizmo(id).asBall();
     const Vec2<Real> p = b.positionAt(at), v = b.velocityAt(at);
-    s.balls.push_back(BallView{id, nameOf(names, id), exact(p.x), exact(p.y), exact(v.x), exact(v.y), {}, {}});
+    s.balls.push_back(BallView{id, gizmoName(names, id), exact(p.x), exact(p.y), exact(v.x), exact(v.y), {}, {}});
   }
   for (const Event<Real>& e : board.pendingEvents()) {
     std::string line = exactText(e.time) + " " + std::string(eventKindName(e.kind));
-    if (e.a != kNoGizmo) line += " " + nameOf(names, e.a);
-    if (e.b != kNoGizmo && e.kind != EventKind::Input) line += " " + nameOf(names, e.b);
+    if (e.a != kNoGizmo) line += " " + gizmoName(names, e.a);
+    if (e.b != kNoGizmo && e.kind != EventKind::Input) line += " " + gizmoName(names, e.b);
     if (e.kind == EventKind::Collision) line += " feature " + std::to_string(e.feature);
     if (e.kind == EventKind::Input) line += (e.b ? " up " : " down ") + std::to_string(e.feature);
     s.queue.push_back(line);
@@ -549,6 +544,11 @@ std::vector<std::uint8_t> recordHeader(const RunRequest& request, const Precisio
   return withRecordablePrecision(precision, [&]<class Real>() {
     return headerBytes(request, precision, *buildBoard<Real>(request.board, paramsFor<Real>(request)), boardWarnings);
   });
+}
+
+std::string gizmoName(const std::vector<std::string>& names, GizmoId id) {
+  if (id >= 0 && std::size_t(id) < names.size()) return names[std::size_t(id)];
+  return id == kNoGizmo ? "" : id > 0 ? spawnedBallName(id, names) : "#" + std::to_string(id);
 }
 
 OpenedLog openLog(std::unique_ptr<ByteSource> source, bool verifyChecksums) {

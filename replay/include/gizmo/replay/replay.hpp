@@ -69,6 +69,9 @@ struct OpenedLog {
   PrecisionChoice precision;
   std::vector<std::string> gizmoNames;  // by id, as the board builds them
 };
+// A gizmo's name from a log's gizmoNames: a ball a spawner added has the name the board gives it
+// (spawnedBallName); an id the board never had is shown as #id, and none as "".
+std::string gizmoName(const std::vector<std::string>& names, GizmoId id);
 // Reads a log's header and finds its chunks; throws FormatError (with the path) when it is not a
 // readable log.
 OpenedLog openLog(const std::string& path);
