@@ -13,6 +13,7 @@
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/verify/certify.hpp"
 #include "gizmo/verify/certify_ladder.hpp"
+#include "support/certify_hand_board.hpp"
 #include "support/certify_report_text.hpp"
 #include "support/fixture_request.hpp"
 
@@ -20,6 +21,8 @@ namespace gizmo::verify {
 namespace {
 
 using test::describe;
+using test::eventAt;
+using test::settle;
 
 std::uint64_t uncertifiedCount(const CertifyReport& r) {
   std::uint64_t n = 0;
@@ -109,75 +112,27 @@ INSTANTIATE_TEST_SUITE_P(Boards, CertifyFlipperGraze,
                                            GrazeCase{"boards/verify/flipper-graze-miss.txt", false}),
                          [](const auto& info) { return std::string(info.param.crosses ? "Crosses" : "StaysOut"); });
 
-// A board by hand: the walls (0), a left flipper at (9, 12) (1), one ball (2), no gravity.
-struct HandBoard {
-  detail::BoardLayout layout;
-  detail::BoardSnapshot snapshot;
-
-  explicit HandBoard(Vec2<double> ball) {
-    layout.model = MotionModel::Ballistic;
-    detail::LayoutGizmo walls;
-    walls.id = 0;
-    walls.name = "OuterWalls";
-    walls.shape = outerWallsShape<double>();
-    walls.bounds = Box<double>{Vec2<double>(0, 0), Vec2<double>(20, 20)};
-    detail::LayoutGizmo flipper;
-    flipper.id = 1;
-    flipper.name = "LF";
-    flipper.kind = detail::LayoutKind::Flipper;
-    flipper.bounds = Box<double>{Vec2<double>(9, 12), Vec2<double>(11, 14)};
-    const FlipperLayout f = flipperLayout(GizmoType::LeftFlipper, 0);
-    flipper.pivot = Vec2<double>(9, 12) + f.pivot;
-    flipper.restQuarter = f.restQuarter;
-    flipper.endQuarter = f.endQuarter;
-    flipper.forwardSign = f.forwardSign;
-    detail::LayoutGizmo b;
-    b.id = 2;
-    b.name = "B";
-    b.kind = detail::LayoutKind::Ball;
-    layout.gizmos = {walls, flipper, b};
-    layout.balls = {2};
-    layout.ballIndex = {-1, -1, 0};
-    layout.collider = {{0, 1, kNoGizmo}};
-    layout.cells.assign(std::size_t(detail::BoardLayout::kCells * detail::BoardLayout::kCells), {});
-    for (int y = 12; y <= 14; ++y)
-      for (int x = 9; x <= 11; ++x) layout.cells[std::size_t(y * detail::BoardLayout::kCells + x)].push_back(1);
-
-    // At t = 0.2 the flipper starts its forward swing from rest; the ball lies still.
-    snapshot.now = 0.2;
-    detail::BallSnapshot s;
-    s.id = 2;
-    s.t0 = 0.2;
-    s.p = ball;
-    snapshot.balls = {s};
-    detail::FlipperSnapshot fs;
-    fs.id = 1;
-    fs.swinging = true;
-    fs.quarter = f.restQuarter;
-    fs.offset = 0;
-    fs.t0 = 0.2;
-    fs.turn = f.forwardSign;
-    snapshot.flippers = {fs};
-  }
-};
-
-Event<double> eventAt(double time, EventKind kind, GizmoId a = kNoGizmo, GizmoId b = kNoGizmo, std::int32_t feature = -1) {
-  Event<double> e;
-  e.time = time;
-  e.kind = kind;
-  e.a = a;
-  e.b = b;
-  e.feature = feature;
-  return e;
-}
-
-detail::LadderResult settle(const HandBoard& board, const Event<double>& executed, const Event<double>& next) {
-  detail::DecisionInput in;
-  in.executed = executed;
-  in.hasNextScheduled = true;
-  in.nextScheduled = next;
-  detail::Ladder ladder(board.layout, CertifyOptions{});
-  return ladder.settle(board.snapshot, in);
+// A board by hand (support/certify_hand_board.hpp): a left flipper at (9, 12) that starts its
+// forward swing from rest at t = 0.2, and a ball lying still at `ball`.
+test::HandBoard swingingFlipperBoard(Vec2<double> ball) {
+  detail::LayoutGizmo flipper;
+  flipper.name = "LF";
+  flipper.kind = detail::LayoutKind::Flipper;
+  const FlipperLayout f = flipperLayout(GizmoType::LeftFlipper, 0);
+  flipper.pivot = Vec2<double>(9, 12) + f.pivot;
+  flipper.restQuarter = f.restQuarter;
+  flipper.endQuarter = f.endQuarter;
+  flipper.forwardSign = f.forwardSign;
+  test::HandBoard board(flipper, Vec2<double>(9, 12), ball, 0.2);
+  detail::FlipperSnapshot fs;
+  fs.id = 1;
+  fs.swinging = true;
+  fs.quarter = f.restQuarter;
+  fs.offset = 0;
+  fs.t0 = 0.2;
+  fs.turn = f.forwardSign;
+  board.snapshot.flippers = {fs};
+  return board;
 }
 
 // The ball lies on the diagonal 1.63 from the pivot: the bar, turning from down towards east,
@@ -185,14 +140,14 @@ detail::LadderResult settle(const HandBoard& board, const Event<double>& execute
 const Vec2<double> kInTheWay(10.4, 13.4);
 
 TEST(CertifyFlipperByHand, NoContactBeforeTheSwingReachesTheBallIsCertified) {
-  const HandBoard board(kInTheWay);
+  const test::HandBoard board = swingingFlipperBoard(kInTheWay);
   const detail::LadderResult r = settle(board, eventAt(0.21, EventKind::EndOfTick), eventAt(0.21, EventKind::EndOfTick));
   EXPECT_EQ(r.outcome.verdict, detail::Verdict::Certified);
   EXPECT_EQ(r.rung, 0);
 }
 
 TEST(CertifyFlipperByHand, AnEndOfTickAfterTheStrikeIsWrong) {
-  const HandBoard board(kInTheWay);
+  const test::HandBoard board = swingingFlipperBoard(kInTheWay);
   const detail::LadderResult r = settle(board, eventAt(0.25, EventKind::EndOfTick), eventAt(0.25, EventKind::EndOfTick));
   ASSERT_EQ(r.outcome.verdict, detail::Verdict::Wrong);
   EXPECT_EQ(r.outcome.other.kind, EventKind::Collision);
@@ -203,7 +158,7 @@ TEST(CertifyFlipperByHand, AnEndOfTickAfterTheStrikeIsWrong) {
 }
 
 TEST(CertifyFlipperByHand, AClaimedTipContactOutOfReachIsWrong) {
-  const HandBoard board(Vec2<double>(12.5, 13.4));  // 3.4 from the pivot: beyond the tip's reach of 2
+  const test::HandBoard board = swingingFlipperBoard(Vec2<double>(12.5, 13.4));  // 3.4 from the pivot: beyond the tip's reach of 2
   const detail::LadderResult r =
       settle(board, eventAt(0.24, EventKind::Collision, 1, 2, 3), eventAt(0.25, EventKind::EndOfTick));
   ASSERT_EQ(r.outcome.verdict, detail::Verdict::Wrong);

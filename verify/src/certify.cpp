@@ -9,6 +9,7 @@
 #include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/polygonal_gizmo.hpp"
+#include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/verify/certify.hpp"
 #include "gizmo/verify/certify_ladder.hpp"
 
@@ -19,6 +20,7 @@ using namespace detail;
 std::string uncertifiedReasonName(UncertifiedReason r) {
   switch (r) {
     case UncertifiedReason::SwingingFlipper: return "swinging flipper";
+    case UncertifiedReason::TurningSpinner: return "turning spinner";
     case UncertifiedReason::Undecided: return "undecided";
   }
   return "?";
@@ -69,6 +71,10 @@ BoardLayout layoutOf(GameBoard<double>& board) {
       L.restQuarter = f.restQuarter;
       L.endQuarter = f.endQuarter;
       L.forwardSign = f.forwardSign;
+    } else if (g.kind() == GizmoKind::Spinner) {
+      L.kind = LayoutKind::Spinner;
+      const GizmoSpec s = g.spec();
+      L.pivot = Vec2<double>(double(s.x + 1), double(s.y + 1));
     } else if (const auto* shaped = dynamic_cast<const AbstractGizmoWithPolygonalGeometry<double>*>(&g)) {
       L.shape = shaped->shape();
       L.kind = LayoutKind::FixedShape;
@@ -173,7 +179,7 @@ class CertifyingObserver final : public BoardObserver<double> {
     }
     // Overwritten in place: the copies reuse the vectors' storage, so a snapshot allocates
     // nothing once the run is under way.
-    std::size_t flippers = 0, absorbers = 0;
+    std::size_t flippers = 0, spinners = 0, absorbers = 0;
     for (const LayoutGizmo& g : layout_.gizmos) {
       if (g.kind == LayoutKind::Flipper) {
         const auto& f = static_cast<const Flipper<double>&>(board_.gizmo(g.id));
@@ -183,6 +189,14 @@ class CertifyingObserver final : public BoardObserver<double> {
         fs.swinging = f.swinging();
         if (!fs.swinging) fs.still = f.stillShape();
         else swingOf(f, g, fs);
+      } else if (g.kind == LayoutKind::Spinner) {
+        const auto& spinner = static_cast<const Spinner<double>&>(board_.gizmo(g.id));
+        if (s.spinners.size() <= spinners) s.spinners.emplace_back();
+        SpinnerSnapshot& ss = s.spinners[spinners++];
+        ss.id = g.id;
+        ss.turning = spinner.turning();
+        if (!ss.turning) ss.still = spinner.stillShape();
+        else turnOf(spinner, ss);
       } else if (g.kind == LayoutKind::Absorber) {
         const auto& a = static_cast<const Absorber<double>&>(board_.gizmo(g.id));
         if (s.absorbers.size() <= absorbers) s.absorbers.emplace_back();
@@ -208,6 +222,16 @@ class CertifyingObserver final : public BoardObserver<double> {
     out.turn = g.forwardSign * f.direction();
   }
 
+  // The turn's anchor, exactly as the spinner holds it (its saved state: t0, phase; quarter).
+  void turnOf(const Spinner<double>& spinner, SpinnerSnapshot& out) {
+    flipperState_.reals.clear();
+    flipperState_.ints.clear();
+    spinner.saveState(flipperState_);
+    out.t0 = flipperState_.reals.at(0);
+    out.phase = flipperState_.reals.at(1);
+    out.quarter = int(flipperState_.ints.at(0));
+  }
+
   void forget(const Event<double>& e) {
     for (std::size_t i = 0; i < live_.size(); ++i)
       if (live_[i].sequence == e.sequence) {
@@ -220,6 +244,7 @@ class CertifyingObserver final : public BoardObserver<double> {
   const Shape<double>* shapeOf(GizmoId id) const {
     const AbstractGizmo<double>& g = board_.gizmo(id);
     if (const auto* f = dynamic_cast<const Flipper<double>*>(&g)) return &f->stillShape();
+    if (const auto* s = dynamic_cast<const Spinner<double>*>(&g)) return &s->stillShape();
     if (const auto* p = dynamic_cast<const AbstractGizmoWithPolygonalGeometry<double>*>(&g)) return &p->shape();
     return nullptr;
   }
@@ -289,9 +314,7 @@ class CertifyingObserver final : public BoardObserver<double> {
     // Still overlapping at the top rung: a tie if the window is down at that precision's scale.
     const double tieScale = std::ldexp(std::max(1.0, std::abs(in.executed.time)), -int(result.bits / 2));
     if (!(o.window <= tieScale)) {
-      bool swinging = !o.ownPolynomial;
-      for (const Overlap& v : o.overlaps) swinging = swinging || !v.polynomial;
-      uncertified(in, o, executed, time, swinging ? UncertifiedReason::SwingingFlipper : UncertifiedReason::Undecided);
+      uncertified(in, o, executed, time, reasonOf(in, o));
       return;
     }
     TieDecision t;
@@ -302,6 +325,22 @@ class CertifyingObserver final : public BoardObserver<double> {
     t.within = exactBound(o.window + 0.0);  // a width of −0 (two equal points) reads as 0
     t.orderFollowed = sameEvent(o.other, keyOf(in.executed)) || tieOrderBefore(keyOf(in.executed), o.other);
     report_.ties.push_back(std::move(t));
+  }
+
+  // Why the exact step could not order them: a gap that is not a polynomial (a moving arm's side
+  // or tip) among the executed event's and the overlapping ones, or none.
+  UncertifiedReason reasonOf(const DecisionInput& in, const RungOutcome& o) const {
+    bool flipper = false, spinner = false;
+    auto note = [&](GizmoId id) {
+      const LayoutKind kind = layout_.gizmos[std::size_t(id)].kind;
+      flipper = flipper || kind == LayoutKind::Flipper;
+      spinner = spinner || kind == LayoutKind::Spinner;
+    };
+    if (!o.ownPolynomial) note(in.executed.a);
+    for (const Overlap& v : o.overlaps)
+      if (!v.polynomial) note(v.key.a);
+    if (spinner) return UncertifiedReason::TurningSpinner;
+    return flipper ? UncertifiedReason::SwingingFlipper : UncertifiedReason::Undecided;
   }
 
   void uncertified(const DecisionInput& in, const RungOutcome& o, const EventRef& executed, const ExactBound& time,
@@ -320,17 +359,12 @@ class CertifyingObserver final : public BoardObserver<double> {
   std::vector<Event<double>> live_;
   BoardSnapshot snapshot_;
   bool snapshotTaken_ = false;
-  GizmoState<double> flipperState_;  // scratch for swingOf
+  GizmoState<double> flipperState_;  // scratch for swingOf and turnOf
 };
 
 }  // namespace
 
 CertifyReport certifyRun(const RunRequest& request, const CertifyOptions& options) {
-  // The ladder re-derives each decision from the shapes it knows; a turning cross is not one of
-  // them yet, and a decision certified without it would claim what was never checked.
-  for (const GizmoSpec& g : request.board.gizmos)
-    if (g.type == GizmoType::Spinner)
-      throw CertifyError("certified decisions do not cover the spinner '" + g.name + "' yet");
   CertifyReport report;
   std::unique_ptr<GameBoard<double>> board = prepareRun<double>(request);
   CertifyingObserver observer(*board, options, report);

@@ -91,7 +91,7 @@ class Polynomials {
 
   // The polynomial whose roots include the time (in s) of the event `k`; several crossings (the
   // four sides of a leave, the two ends of a contact) multiply. Nothing for a moving flipper
-  // feature, whose gap is not a polynomial.
+  // feature or a turning spinner's, whose gaps are not polynomials.
   std::optional<QPoly> of(const EventKey& k) const {
     switch (k.kind) {
       case EventKind::Collision: return collision(k);
@@ -137,6 +137,10 @@ class Polynomials {
         return roundGap(m.p - exact(g.pivot), m.v, m.h, r_ + Rational(kFlipperRadius));
       }
       shape = &f->still;
+    } else if (g.kind == LayoutKind::Spinner) {
+      const SpinnerSnapshot* s = spinner(k.a);
+      if (!s || s->turning) return std::nullopt;  // every feature of a turning cross moves
+      shape = &s->still;
     }
     const std::size_t feature = std::size_t(k.feature);
     if (feature < shape->segments.size()) return segmentGap(m, shape->segments[feature].a, shape->segments[feature].b, r_);
@@ -151,6 +155,11 @@ class Polynomials {
   const FlipperSnapshot* flipper(GizmoId id) const {
     for (const FlipperSnapshot& f : snap_.flippers)
       if (f.id == id) return &f;
+    return nullptr;
+  }
+  const SpinnerSnapshot* spinner(GizmoId id) const {
+    for (const SpinnerSnapshot& s : snap_.spinners)
+      if (s.id == id) return &s;
     return nullptr;
   }
 

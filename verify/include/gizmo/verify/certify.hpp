@@ -26,13 +26,15 @@ struct CertifyOptions {
 };
 
 // Why a decision is neither certified nor proven wrong nor a tie: the search ran out of
-// subdivisions at every rung without a narrow overlap, with a swinging flipper's side or tip
-// among the events left overlapping (their gaps are not polynomials: no exact step), or not.
+// subdivisions at every rung without a narrow overlap, with a swinging flipper's or a turning
+// spinner's side or tip among the events left overlapping (their gaps are not polynomials: no
+// exact step), or not.
 enum class UncertifiedReason : std::uint8_t {
   SwingingFlipper,
   Undecided,
+  TurningSpinner,
 };
-inline constexpr int kUncertifiedReasonCount = 2;
+inline constexpr int kUncertifiedReasonCount = 3;
 std::string uncertifiedReasonName(UncertifiedReason r);
 
 // An event of the run, or one that the certifier found, as plain data.
@@ -81,7 +83,7 @@ struct UncertifiedDecision {
   ExactBound time;
   EventRef executed;
   UncertifiedReason reason = UncertifiedReason::Undecided;
-  EventRef other;  // the rival that could not be separated (or the swinging flipper)
+  EventRef other;  // the rival that could not be separated (or the moving arm)
   ExactBound window;  // Undecided: both may lie in a window this wide (inf: no bound found)
 };
 

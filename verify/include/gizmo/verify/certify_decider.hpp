@@ -1,7 +1,7 @@
 #pragma once
 // One decision at one rung: the executed event against every event that could have come
 // first, with the kernel's gap searches (certify_kernel.hpp, and certify_swing.hpp for swinging
-// flippers). A template over the interval type, like the kernel; only certify_rungs.cpp
+// flippers and turning spinners). A template over the interval type, like the kernel; only certify_rungs.cpp
 // instantiates it (built with -frounding-math, and with sin, cos and π for the interval type in
 // scope).
 #include <algorithm>
@@ -46,10 +46,14 @@ class Decider {
       boxes_.push_back(sweptBoxOf(motions_.back(), window, r_));
     }
     // Built before any gap points into it. The window never runs past a swing's end: the
-    // flipper's stop is a scheduled event, so it bounds the window.
+    // flipper's stop is a scheduled event, so it bounds the window. A spinner turns on until an
+    // event stops it, so its arms turn at one rate throughout the window too.
     axes_.clear();
     for (const FlipperSnapshot& f : snap.flippers)
       if (f.swinging) axes_.push_back(swingAxisOf<I>(layout_.gizmos[std::size_t(f.id)], f, snap.now));
+    for (const SpinnerSnapshot& sp : snap.spinners)
+      if (sp.turning)
+        for (int arm = 0; arm < 4; ++arm) axes_.push_back(spinnerArmAxisOf<I>(layout_.gizmos[std::size_t(sp.id)], sp, arm, snap.now));
 
     best_ = RungOutcome{};
     best_.verdict = Verdict::Certified;
@@ -192,6 +196,15 @@ class Decider {
       }
       still = geometryOf(fs->still);
       geometry = &still;
+    } else if (layout_.gizmos[std::size_t(g)].kind == LayoutKind::Spinner) {
+      const SpinnerSnapshot* ss = spinnerState(g);
+      if (!ss) return;
+      if (ss->turning) {
+        turningArmGaps(g, i, f, skipOwn);
+        return;
+      }
+      still = geometryOf(ss->still);
+      geometry = &still;
     }
     std::int32_t feature = 0;
     auto skipped = [&](std::int32_t k) {
@@ -236,6 +249,28 @@ class Decider {
       if (feature == 2) f(roundGap(Vec2<I>(m.p - axis->pivot), m.v, m.h, I(r + axis->radius), key));
       else f(swingGapOf(m, *axis, r, key));
     }
+  }
+
+  // A turning spinner's arms: each one's sides and tip move (features 4·arm + 0, 1, 3). The arms
+  // meet at the centre, which no ball reaches without meeting an arm first: there is no pivot
+  // circle (the core's Spinner::timeUntilCollision). None is skipped, as at a swinging flipper.
+  template <class F>
+  void turningArmGaps(GizmoId g, std::size_t i, F&& f, bool skipOwn) {
+    const Motion<I>& m = motions_[i];
+    const I r(r_);
+    for (const SwingAxis<I>& axis : axes_) {
+      if (axis.id != g) continue;
+      for (std::int32_t feature : {0, 1, 3}) {
+        const EventKey key{EventKind::Collision, g, snap_->balls[i].id, 4 * axis.arm + feature};
+        if (!(skipOwn && sameEvent(key, executed_))) f(swingGapOf(m, axis, r, key));
+      }
+    }
+  }
+
+  const SpinnerSnapshot* spinnerState(GizmoId g) const {
+    for (const SpinnerSnapshot& s : snap_->spinners)
+      if (s.id == g) return &s;
+    return nullptr;
   }
 
   const FlipperSnapshot* flipperState(GizmoId g) const {

@@ -14,7 +14,7 @@
 
 namespace gizmo::verify::detail {
 
-enum class LayoutKind : std::uint8_t { Ball, FixedShape, Absorber, Flipper };
+enum class LayoutKind : std::uint8_t { Ball, FixedShape, Absorber, Flipper, Spinner };
 
 struct LayoutGizmo {
   GizmoId id = kNoGizmo;
@@ -24,7 +24,7 @@ struct LayoutGizmo {
   Box<double> bounds;    // everything the gizmo can ever touch (a flipper: its 2 × 2 box)
   std::array<double, 4> rect{};  // absorbers: x, y, width, height
   // Flippers: the pivot centre, the quarter turns of the rest and end positions, and the sense
-  // of the forward swing (+1: θ grows), as flipperLayout gives them.
+  // of the forward swing (+1: θ grows), as flipperLayout gives them. Spinners: the centre.
   Vec2<double> pivot;
   int restQuarter = 0, endQuarter = 0, forwardSign = 1;
 };
@@ -69,6 +69,16 @@ struct FlipperSnapshot {
   int turn = 0;
 };
 
+struct SpinnerSnapshot {
+  GizmoId id = kNoGizmo;
+  bool turning = false;
+  Shape<double> still;  // when still: the cross where it stands
+  // When turning: arm k points at the exact quarter turn quarter + k turned by
+  // phase + kSpinnerTurnRate·(t − t0), the run's doubles phase and t0 taken as exact.
+  int quarter = 0;
+  double phase = 0, t0 = 0;
+};
+
 struct AbsorberSnapshot {
   GizmoId id = kNoGizmo;
   std::vector<GizmoId> firedInside;  // balls it fired that have not left yet (they leave, not collide)
@@ -78,6 +88,7 @@ struct BoardSnapshot {
   double now = 0;
   std::vector<BallSnapshot> balls;          // in the order of BoardLayout::balls
   std::vector<FlipperSnapshot> flippers;
+  std::vector<SpinnerSnapshot> spinners;
   std::vector<AbsorberSnapshot> absorbers;
 };
 
@@ -115,7 +126,7 @@ struct Overlap {
   EventKey key;
   bool scheduled = false;   // the next scheduled event (its time is exact: DecisionInput::nextScheduled)
   bool entry = false;       // a proven entry in [lo, hi]; otherwise it may lie anywhere in [lo, hi]
-  bool polynomial = true;   // its gap is a polynomial (not a swinging flipper's side or tip)
+  bool polynomial = true;   // its gap is a polynomial (not a swinging flipper's or turning spinner's side or tip)
   double lo = 0, hi = 0;
 };
 

@@ -1,8 +1,9 @@
 #pragma once
-// The gaps between a ball and a swinging flipper, for the certification kernel. The flipper's
-// axis turns at a constant rate, so its gaps hold sin and cos of a linear angle and are not
-// polynomials; they are enclosed with the interval sine and cosine (interval_trig.hpp for the
-// double intervals, MPFI's own for MpfiInterval) and searched by the kernel's subdivision.
+// The gaps between a ball and a swinging flipper or a turning spinner's arm, for the certification
+// kernel. The flipper's axis (and each arm) turns at a constant rate, so its gaps hold sin and cos
+// of a linear angle and are not polynomials; they are enclosed with the interval sine and cosine
+// (interval_trig.hpp for the double intervals, MPFI's own for MpfiInterval) and searched by the
+// kernel's subdivision.
 //
 // The model (docs/verification.md, "Swinging flippers"): between two events a swinging flipper's
 // progress is s0 + d (t − t0) with the run's doubles t0, s0 and direction d taken as exact, and its
@@ -21,11 +22,12 @@
 
 namespace gizmo::verify::detail {
 
-// Where a swinging flipper's axis points over the decision's window: the quarter turn `quarter`
-// applied to (cos φ, sin φ), φ(s) = phase + omega·s.
+// Where a swinging flipper's axis, or a turning spinner's arm, points over the decision's window:
+// the quarter turn `quarter` applied to (cos φ, sin φ), φ(s) = phase + omega·s.
 template <class I>
 struct SwingAxis {
   GizmoId id = kNoGizmo;
+  int arm = 0;  // a spinner's arm (features 4·arm + 0, 1, 3); a flipper's is 0
   Vec2<I> pivot;
   int quarter = 0;
   I phase, omega;
@@ -43,6 +45,24 @@ SwingAxis<I> swingAxisOf(const LayoutGizmo& layout, const FlipperSnapshot& f, do
   axis.phase = I(double(layout.forwardSign)) * sixPi * I(f.offset) + axis.omega * (I(now) - I(f.t0));
   axis.length = I(kFlipperLength);
   axis.radius = I(kFlipperRadius);
+  return axis;
+}
+
+// A turning spinner's arm `arm` (docs/verification.md, "Turning spinners"): the snapshot's phase
+// and t0 taken as exact, the arm at the exact quarter turn quarter + arm. The core counts the
+// quarters the cross has turned with π rounded to the scalar and turns the phase left over; this
+// model turns the whole angle with the exact π, as the flipper's model does.
+template <class I>
+SwingAxis<I> spinnerArmAxisOf(const LayoutGizmo& layout, const SpinnerSnapshot& s, int arm, double now) {
+  SwingAxis<I> axis;
+  axis.id = s.id;
+  axis.arm = arm;
+  axis.pivot = vecOf<I>(layout.pivot);
+  axis.quarter = (s.quarter + arm) % 4;
+  axis.omega = I(kSpinnerTurnRate);
+  axis.phase = I(s.phase) + axis.omega * (I(now) - I(s.t0));
+  axis.length = I(kSpinnerArmLength);
+  axis.radius = I(kSpinnerArmRadius);
   return axis;
 }
 
@@ -66,7 +86,7 @@ SwingGap<I> swingGapOf(const Motion<I>& m, const SwingAxis<I>& axis, const I& r,
   gap.v = m.v;
   gap.h = m.h;
   gap.reach = r + axis.radius;
-  gap.feature = key.feature;
+  gap.feature = key.feature % 4;  // a spinner's arm k numbers its features 4k + 0, 1, 3
   return gap;
 }
 
