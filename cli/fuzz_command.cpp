@@ -135,6 +135,26 @@ int fuzzCommand(const FuzzOptions& o) {
     else if (done == planned || done % std::max<std::uint64_t>(1, planned / 10) == 0)
       std::cerr << "gizmo fuzz: " << done << "/" << planned << " cases, " << failures << " failures\n";
   };
+  // Each case's start and end with its wall time, so that a shard that goes quiet names the case
+  // it is on (a case can run for minutes: docs/fuzzing.md).
+  std::vector<std::pair<std::uint64_t, std::chrono::steady_clock::time_point>> running;
+  if (o.logCases) {
+    c.caseStarted = [&](std::uint64_t index) {
+      running.emplace_back(index, std::chrono::steady_clock::now());
+      std::cerr << "gizmo fuzz: case " << index << " started\n";
+    };
+    c.caseFinished = [&](std::uint64_t index, std::uint64_t failed) {
+      double seconds = 0;
+      for (std::size_t k = 0; k < running.size(); ++k)
+        if (running[k].first == index) {
+          seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - running[k].second).count();
+          running.erase(running.begin() + std::ptrdiff_t(k));
+          break;
+        }
+      std::cerr << "gizmo fuzz: case " << index << " done in " << seconds << " s, "
+                << (failed == 0 ? std::string("every property holds") : std::to_string(failed) + " failed") << '\n';
+    };
+  }
   std::cerr << "gizmo fuzz: seed " << o.seed << ", " << o.count << " cases"
             << (o.shard.empty() ? std::string() : ", shard " + o.shard) << ", " << o.jobs << " jobs, properties "
             << o.property << '\n';

@@ -19,6 +19,7 @@ struct FuzzOptions {
   std::string out;          // results folder; empty: failures are only printed
   double wallSeconds = 0;   // --budget: stop starting cases after this long (0: no limit)
   std::size_t shrinkBudget = 100;
+  bool logCases = false;    // --log-cases: a line as each case starts and ends
   std::vector<std::string> merge;  // --merge DIR...: merge these results folders
   std::string check;        // --check BOARD: check one run instead of generating
   RunOptions run;           // --keys, --model, --max-tick, --time for --check

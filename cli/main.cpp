@@ -136,6 +136,9 @@ int main(int argc, char** argv) {
                       "campaign's result depend on the machine; the summary then says 'stopped early')");
   fuzzCmd->add_option("--shrink-budget", fuzz.shrinkBudget, "Property checks spent shrinking one failure")
       ->capture_default_str();
+  fuzzCmd->add_flag("--log-cases", fuzz.logCases,
+                    "Print a line to stderr as each case starts and as it ends (with its wall time), so that a "
+                    "shard that goes quiet says which case it is on");
   CLI::Option* fuzzMerge = fuzzCmd->add_option("--merge", fuzz.merge, "Merge the --out folders of a campaign's shards");
   CLI::Option* fuzzCheck = fuzzCmd->add_option("--check", fuzz.check, "Check the properties on this board instead");
   // --time is seconds of board time here as in run, record and verify: the --check run's length.
@@ -148,7 +151,8 @@ int main(int argc, char** argv) {
       fuzzCmd->add_option("--max-tick", fuzz.run.maxTick, "With --check: maximum tick length, seconds")->capture_default_str();
   for (CLI::Option* checkOnly : {fuzzKeys, fuzzModel, fuzzMaxTick}) checkOnly->needs(fuzzCheck);
   fuzzMerge->excludes(fuzzCheck);
-  for (const char* campaignOnly : {"--count", "--seed", "--jobs", "--shard", "--out", "--budget", "--shrink-budget"}) {
+  for (const char* campaignOnly :
+       {"--count", "--seed", "--jobs", "--shard", "--out", "--budget", "--shrink-budget", "--log-cases"}) {
     fuzzMerge->excludes(fuzzCmd->get_option(campaignOnly));
     fuzzCheck->excludes(fuzzCmd->get_option(campaignOnly));
   }

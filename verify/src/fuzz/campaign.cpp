@@ -100,6 +100,10 @@ CampaignResult runCampaign(const CampaignOptions& o) {
       const std::size_t slot = next++;
       if (slot >= planned.size()) return;
       const std::uint64_t index = planned[slot];
+      if (o.caseStarted) {
+        std::lock_guard<std::mutex> lock(progressMutex);
+        o.caseStarted(index);
+      }
       const RunRequest run = caseRun(o.seed, index);
       std::uint64_t failed = 0;
       const std::vector<PropertyResult> results = checkProperties(o.properties, run);
@@ -129,6 +133,7 @@ CampaignResult runCampaign(const CampaignOptions& o) {
       std::lock_guard<std::mutex> lock(progressMutex);
       ++done;
       failures += failed;
+      if (o.caseFinished) o.caseFinished(index, failed);
       if (o.progress) o.progress(done, planned.size(), failures);
     }
   };

@@ -27,6 +27,10 @@ struct CampaignOptions {
   std::function<bool()> stop;
   // Called after each case, from the worker threads but never two at once.
   std::function<void(std::uint64_t done, std::uint64_t planned, std::uint64_t failures)> progress;
+  // Called as a case starts and as it ends (with its failed properties), from the worker threads
+  // but never two at once: a log that says which case a silent shard is on.
+  std::function<void(std::uint64_t index)> caseStarted;
+  std::function<void(std::uint64_t index, std::uint64_t failed)> caseFinished;
 };
 
 // One property on one case.
