@@ -74,6 +74,26 @@ TEST(Box2dMapping, FlipperIsAKinematicCapsuleAboutItsPivot) {
   EXPECT_EQ(body.parts[2].centre.x, kFlipperLength);
 }
 
+TEST(Box2dMapping, SpinnerIsAKinematicCrossAboutItsCentre) {
+  GizmoSpec g;
+  g.type = GizmoType::Spinner;
+  g.name = "S";
+  g.x = 9;
+  g.y = 9;
+  g.width = g.height = 2;
+  const Box2dBody body = box2dBodyOf(g);
+  EXPECT_TRUE(body.kinematic);
+  EXPECT_EQ(body.origin.x, 10.0);
+  EXPECT_EQ(body.origin.y, 10.0);
+  EXPECT_EQ(body.angle, 0.0);  // still at load, its arms along the axes
+  EXPECT_EQ(body.restitution, 0.9);
+  ASSERT_EQ(body.parts.size(), 6u);  // two rectangles and the four tips
+  EXPECT_EQ(body.parts[0].points.at(2).x, kSpinnerArmLength);
+  EXPECT_EQ(body.parts[0].points.at(2).y, kSpinnerArmRadius - kBox2dPolygonSkin);
+  EXPECT_EQ(body.parts[3].centre.y, kSpinnerArmLength);
+  EXPECT_EQ(body.parts[3].radius, kSpinnerArmRadius);
+}
+
 // A ball head-on at a square's face at 10 L/s: we meet it when the centre is 0.25 from the
 // face, Box2D 3 linear slops later (0.0015 s), within its tolerance.
 TEST(Box2dTimeOfImpact, HeadOnFaceStopsThreeLinearSlopsPastContact) {
@@ -247,6 +267,17 @@ TEST(Box2dScenes, SlowBouncesAreLost) {
   EXPECT_LE(sticky.box2dCollisions, 1u);
   EXPECT_GT(zero.box2dCollisions, sticky.box2dCollisions);
   EXPECT_GT(zero.missedByBox2d, 0u);
+}
+
+// Box2D's cross turns on the core's schedule: D meets the turning cross 0.87 s in, 0.024 s after it
+// would have met the still one, and both hits on S are matched within a Box2D step or two.
+TEST(Box2dScenes, TurningSpinnerHitIsMatched) {
+  const RunRequest r = scene("spinner-turning.txt", 1.5);
+  const StepComparison c = crosscheckAt(r, 1.0 / 480);
+  EXPECT_EQ(c.matched, 2u);  // B on the still cross, D on the turning one
+  EXPECT_EQ(c.missedByBox2d, 0u);
+  EXPECT_EQ(c.missedByUs, 0u);
+  EXPECT_LT(c.maxTimeError, 0.005);
 }
 
 // The flipper's strike is matched at a fine step: same ball, same flipper, within the window.

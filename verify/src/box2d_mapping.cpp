@@ -2,10 +2,10 @@
 
 #include <stdexcept>
 
-
 #include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/grid_properties.hpp"
+#include "gizmo/core/gizmos/spinner.hpp"
 
 namespace gizmo::verify {
 namespace {
@@ -51,11 +51,23 @@ std::vector<Box2dPart> flipperParts() {
           circlePart(Vec2<double>(0, 0), kFlipperRadius), circlePart(Vec2<double>(l, 0), kFlipperRadius)};
 }
 
-// A turning cross would need a kinematic body driven by the spinner's toggles, and a spawner
-// bodies added to the world as it runs, which the bridge does not do yet: refused by name rather
-// than compared as something else.
+// Spinner parts in the body's frame: the centre at the origin, the still cross's arms along the
+// axes. Each of its two capsules is a rectangle whose long sides, with the skin, lie at the arm's
+// radius, and its two end circles; where the rectangles cross, they overlap.
+std::vector<Box2dPart> spinnerParts() {
+  const double half = kSpinnerArmRadius - kBox2dPolygonSkin, l = kSpinnerArmLength;
+  std::vector<Box2dPart> parts = {
+      polygonPart({Vec2<double>(-l, -half), Vec2<double>(l, -half), Vec2<double>(l, half), Vec2<double>(-l, half)}),
+      polygonPart({Vec2<double>(-half, -l), Vec2<double>(half, -l), Vec2<double>(half, l), Vec2<double>(-half, l)})};
+  for (const Vec2<double> tip : {Vec2<double>(l, 0), Vec2<double>(0, l), Vec2<double>(-l, 0), Vec2<double>(0, -l)})
+    parts.push_back(circlePart(tip, kSpinnerArmRadius));
+  return parts;
+}
+
+// A spawner would need bodies added to the world as it runs, which the bridge does not do yet:
+// refused by name rather than compared as something else.
 std::optional<std::string> cannotModel(const GizmoSpec& gizmo) {
-  if (gizmo.type != GizmoType::Spinner && gizmo.type != GizmoType::Spawner) return std::nullopt;
+  if (gizmo.type != GizmoType::Spawner) return std::nullopt;
   return std::string("the Box2D cross-check does not model the ") + gizmoTypeWord(gizmo.type) + " '" + gizmo.name +
          "' yet";
 }
@@ -79,6 +91,14 @@ Box2dBody box2dBodyOf(const GizmoSpec& gizmo) {
     body.origin = Vec2<double>(gizmo.x + f.pivot.x, gizmo.y + f.pivot.y);
     body.angle = f.restQuarter * (piOf<double>() / 2);
     body.parts = flipperParts();
+    return body;
+  }
+  if (gizmo.type == GizmoType::Spinner) {
+    // Still at load, its arms along the axes; the bridge turns it on the core's schedule.
+    body.kinematic = true;
+    body.restitution = Spinner<double>::coefficient();
+    body.origin = Vec2<double>(gizmo.x + 1, gizmo.y + 1);
+    body.parts = spinnerParts();
     return body;
   }
   if (const std::optional<std::string> why = cannotModel(gizmo)) throw std::invalid_argument(*why);

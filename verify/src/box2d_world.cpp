@@ -7,6 +7,7 @@
 
 #include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/verify/box2d_board_access.hpp"
 #include "gizmo/verify/box2d_shapes.hpp"
 
@@ -46,6 +47,7 @@ class Box2dBridge final : public b2ContactListener {
     for (const GizmoSpec& g : request.board.gizmos) {
       const std::size_t index = addBody(box2dBodyOf(g));
       if (isFlipper(g.type)) flippers_.push_back(index);
+      if (g.type == GizmoType::Spinner) spinners_.push_back(index);
     }
     for (const BallSpec& b : request.board.balls) addBall(b);
     for (const ConnectSpec& c : request.board.connections) triggers_[idOf(c.source)].push_back(idOf(c.target));
@@ -71,6 +73,18 @@ class Box2dBridge final : public b2ContactListener {
       for (std::size_t f : flippers_) {
         b2Body* body = bodies_[f].body;
         const double turn = flipperAngle(bodies_[f].id, t1) - body->GetAngle();
+        rotationCapped = rotationCapped || std::fabs(turn) > kBox2dMaxRotation * (1 + 1e-5);
+        body->SetAngularVelocity(static_cast<float>(turn / dt));
+      }
+      // A spinner turns on the core's schedule too: to where the shadow spinner stands at t1. The
+      // cross looks the same a quarter turn on, so the turn is taken the short way round modulo
+      // a quarter (a body's angle counts on, the core's restarts every whole turn).
+      for (std::size_t sp : spinners_) {
+        b2Body* body = bodies_[sp].body;
+        const auto& spinner = dynamic_cast<const Spinner<double>&>(shadow_->gizmo(bodies_[sp].id));
+        const double quarter = piOf<double>() / 2;
+        double turn = spinner.angleAt(t1) - body->GetAngle();
+        turn -= quarter * std::round(turn / quarter);
         rotationCapped = rotationCapped || std::fabs(turn) > kBox2dMaxRotation * (1 + 1e-5);
         body->SetAngularVelocity(static_cast<float>(turn / dt));
       }
@@ -245,7 +259,10 @@ class Box2dBridge final : public b2ContactListener {
       CollisionRecord hit = collisionRecord(n.time, ball.name, other.name, other.ball);
       hit.position = n.position;
       record.collisions.push_back(std::move(hit));
-      if (!other.ball) fireTriggersOf(other.id, n.time);
+      if (other.ball) return;
+      // NiklavsM's spinner acts on its own hits (Spinner::collide): it starts or stops.
+      if (dynamic_cast<const Spinner<double>*>(&shadow_->gizmo(other.id))) performAction(other.id, n.time);
+      fireTriggersOf(other.id, n.time);
       return;
     }
     auto& absorber = dynamic_cast<Absorber<double>&>(shadow_->gizmo(other.id));
@@ -337,7 +354,7 @@ class Box2dBridge final : public b2ContactListener {
   DrivenBoardAccess access_;
   b2World world_;
   std::vector<BodyInfo> bodies_;
-  std::vector<std::size_t> flippers_, ballBodies_;
+  std::vector<std::size_t> flippers_, spinners_, ballBodies_;
   std::map<GizmoId, std::vector<GizmoId>> triggers_;
   std::vector<TimedKey> keys_;
   std::map<std::pair<std::size_t, std::size_t>, int> touching_;

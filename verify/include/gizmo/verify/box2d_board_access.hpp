@@ -1,9 +1,9 @@
 #pragma once
 // The core's gizmos ask a BoardAccess for the time, the constants and the balls when they act.
-// The Box2D bridge drives the core's own flippers and absorbers (their swing schedule, their
-// capture queue) outside any event queue: this access gives them a clock that the bridge sets
-// and balls that mirror Box2D's bodies, and ignores what only the event queue needs
-// (recomputation, scheduling, sliding contacts).
+// The Box2D bridge drives the core's own flippers, spinners and absorbers (their swing and turn
+// schedules, their capture queue) outside any event queue: this access gives them a clock that
+// the bridge sets and balls that mirror Box2D's bodies, and ignores what only the event queue
+// needs (recomputation, scheduling, sliding contacts).
 #include <functional>
 #include <utility>
 
@@ -28,8 +28,8 @@ class DrivenBoardAccess final : public BoardAccess<double> {
   // Box2D moves the bodies: a teleporter is a circle bumper here, and says where the runs part.
   bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return false; }
   bool cradled(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
-  // Box2D's bridge drives flippers alone; a board with a spinner or a spawner is refused before
-  // it gets here.
+  // The bridge calls a gizmo's action itself (a spinner's on its own hits, Box2dBridge::handle);
+  // a board with a spawner, whose action adds balls, is refused before it gets here.
   void performAction(GizmoId) override {}
   GizmoId spawnBall(const Vec2<double>&) override { return kNoGizmo; }
 

@@ -47,7 +47,7 @@ struct Box2dBody {
   std::string name;        // the gizmo's name; OuterWalls for the walls
   GizmoType type = GizmoType::Square;
   bool walls = false;
-  bool kinematic = false;  // a flipper: turned by the swing schedule about its pivot
+  bool kinematic = false;  // a flipper or a spinner: turned on the core's schedule about its pivot
   bool sensor = false;     // an absorber: reports overlaps, our code captures
   double restitution = 1;  // the gizmo's coefficient of reflection
   Vec2<double> origin;
