@@ -70,7 +70,13 @@ INSTANTIATE_TEST_SUITE_P(
                       // Balls spawned as it runs join the certifier's layout.
                       FixtureCase{"boards/gizmos/spawner.txt", MotionModel::Ballistic, 10},
                       FixtureCase{"boards/gizmos/spawner.txt", MotionModel::Classic, 10},
-                      FixtureCase{"boards/gizmos/portal.txt", MotionModel::Classic, 10}));
+                      FixtureCase{"boards/gizmos/portal.txt", MotionModel::Classic, 10},
+                      // The end rule at a corner, at the start and after a slide: before the
+                      // certifier followed it, each gave a wrong decision in the ballistic model.
+                      FixtureCase{"boards/verify/corner-leave.txt", MotionModel::Ballistic, 10},
+                      FixtureCase{"boards/verify/corner-leave.txt", MotionModel::Classic, 10},
+                      FixtureCase{"boards/verify/corner-slide-off.txt", MotionModel::Ballistic, 10},
+                      FixtureCase{"boards/verify/corner-slide-off.txt", MotionModel::Classic, 10}));
 
 // The spec example swings its flippers whenever a circle is hit; the decisions next to a
 // swinging flipper are certified like the others.

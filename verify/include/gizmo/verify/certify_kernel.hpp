@@ -74,6 +74,7 @@ struct Gap {
   bool bounded = false;  // edges: the contact parameter u(s) must lie in [0, length]
   Poly<I> u;
   I length;
+  I resolution;  // edges: the position resolution at the ball's centre at s = 0 (the end rule)
   // Round features and ball pairs: the path relative to the centre, for the graze rule.
   std::optional<Motion<I>> round;
   // An edge whose line has the ball's centre behind it: only an entry from a positive gap, after
@@ -135,6 +136,14 @@ Poly<I> quadratic(const I& c0, const I& c1, const I& c2) {
   return p;
 }
 
+// |x| enclosed.
+template <class I>
+I magnitude(const I& x) {
+  if (certainlyNotAfter(I(0.0), x)) return x;
+  if (certainlyNotAfter(x, I(0.0))) return -x;
+  return hull(-x, x);
+}
+
 template <class I>
 Gap<I> segmentGap(const Motion<I>& m, const SegmentI<I>& s, const I& r, const EventKey& key) {
   Gap<I> gap;
@@ -144,6 +153,7 @@ Gap<I> segmentGap(const Motion<I>& m, const SegmentI<I>& s, const I& r, const Ev
   gap.bounded = true;
   gap.u = quadratic(dot(d, s.dir), dot(m.v, s.dir), dot(m.h, s.dir));
   gap.length = s.length;
+  gap.resolution = I(4.0) * I(std::numeric_limits<double>::epsilon()) * (magnitude(m.p.x) + magnitude(m.p.y));
   return gap;
 }
 
@@ -199,6 +209,31 @@ Side contactSide(const Gap<I>& gap, const I& S) {
   return Side::Unknown;
 }
 
+// The core's end rule at s = 0 (leavingOverEnd in geometry/time_of_impact.hpp): a ball within the
+// position resolution of an end of the edge and moving out over it meets that end's vertex, not
+// the edge. A ball placed exactly at a corner, or whose sliding contact has just ended at one,
+// touches the edge there with the gap closing under gravity; without the rule the edge would
+// claim it at once. Inside where the rule certainly does not apply, Unknown where it may.
+template <class I>
+Side contactSideAtStart(const Gap<I>& gap) {
+  const I zero(0.0);
+  const Side side = contactSide(gap, zero);
+  if (!gap.bounded || side == Side::Outside) return side;
+  const I& u = gap.u.c[0];
+  const I& du = gap.u.c[1];
+  const I& ddu = gap.u.c[2];  // half the acceleration along: the same sign
+  auto leaving = [&](const I& distance, const I& rate, const I& accel) -> Tri {
+    if (certainlyBefore(gap.resolution, distance)) return Tri::No;  // not at the end
+    if (certainlyPositive(rate) || (isExactZero(rate) && !certainlyNegative(accel))) return Tri::No;  // not moving out
+    const bool out = certainlyNegative(rate) || (isExactZero(rate) && certainlyNegative(accel));
+    return out && certainlyNotAfter(distance, gap.resolution) ? Tri::Yes : Tri::Unknown;
+  };
+  const Tri atA = leaving(u, du, ddu), atB = leaving(I(gap.length - u), I(-du), I(-ddu));
+  if (atA == Tri::Yes || atB == Tri::Yes) return Side::Outside;
+  if (atA == Tri::Unknown || atB == Tri::Unknown) return Side::Unknown;
+  return side;
+}
+
 enum class Found : std::uint8_t { None, Entry, Undecided };
 // Entry: the first entry lies in [lo, hi] and none before lo. Undecided: none before lo; one may
 // lie anywhere in [lo, end]; [lo, hi] is the piece that could not be settled.
@@ -210,8 +245,8 @@ struct SearchResult {
 
 // What a search learns about one piece S of the window: where the contact point lies, and
 // whether the piece is free of entries in its interior and right end (the gap certainly positive
-// on it, certainly negative: nothing to cross from, or certainly rising: it cannot go from > 0 to
-// ≤ 0). `free` is only looked at when the contact is not certainly off the segment.
+// on it, certainly negative: nothing to cross from, or certainly not falling: it cannot go from
+// > 0 to ≤ 0). `free` is only looked at when the contact is not certainly off the segment.
 struct Piece {
   Side side = Side::Unknown;
   bool free = false;
@@ -277,7 +312,10 @@ struct PolyModel {
     piece.side = contactSide(gap, S);
     if (piece.side == Side::Outside) return piece;
     const I G = rangeOver(gap.g, dg, S);
-    piece.free = certainlyPositive(G) || certainlyNegative(G) || certainlyPositive(dg.at(S));
+    // Not decreasing anywhere on S (g' ≥ 0, which also covers a gap that starts at zero with a
+    // zero slope and rises, as at a corner a ball leaves tangentially): once above zero it stays
+    // there, so nothing on S crosses from above zero to zero.
+    piece.free = certainlyPositive(G) || certainlyNegative(G) || certainlyNotAfter(I(0.0), dg.at(S));
     return piece;
   }
   I at(const I& s) const { return gap.g.at(s); }
@@ -362,8 +400,14 @@ SearchResult<I> firstEntry(const Gap<I>& gap, const I& end, const SearchLimits& 
   SearchResult<I> result;
   if (gap.g.degree == 0) return result;  // constant: never crosses
   const I zero(0.0);
+  const Tri closing = gap.fromBehind ? Tri::No : closingAtStart(gap.g);
+  const Side sideAtStart = contactSideAtStart(gap);
+  // An edge's gap is a quadratic: touching and closing at the start, it never comes back from
+  // above zero (falling at first, it rises at most once, and then for good), so when the contact
+  // at the start is not on the edge (the end rule, or off its ends) the edge has no entry at all.
+  if (gap.bounded && closing == Tri::Yes && sideAtStart == Side::Outside && gap.g.degree <= 2) return result;
   const std::optional<SearchResult<I>> decided =
-      gap.fromBehind ? std::nullopt : decidedAtStart(closingAtStart(gap.g), contactSide(gap, zero), end);
+      gap.fromBehind ? std::nullopt : decidedAtStart(closing, sideAtStart, end);
   // A quadratic that opens upwards with no two real roots is never negative, so it has no entry
   // anywhere: that settles exact tangencies (a straight pass at exactly the touching distance,
   // where the discriminant is exactly 0), which no subdivision can.
