@@ -211,10 +211,10 @@ class CertifyingObserver final : public BoardObserver<double> {
   // swing that starts back from the end position starts from that exact quarter turn: the core
   // snapped the flipper to it when the forward swing stopped.
   void swingOf(const Flipper<double>& f, const LayoutGizmo& g, FlipperSnapshot& out) {
-    flipperState_.reals.clear();
-    flipperState_.ints.clear();
-    f.saveState(flipperState_);
-    const double t0 = flipperState_.reals.at(0), s0 = flipperState_.reals.at(1);
+    savedState_.reals.clear();
+    savedState_.ints.clear();
+    f.saveState(savedState_);
+    const double t0 = savedState_.reals.at(0), s0 = savedState_.reals.at(1);
     const bool fromEnd = s0 == Flipper<double>::swingTime();
     out.quarter = fromEnd ? g.endQuarter : g.restQuarter;
     out.offset = fromEnd ? 0.0 : s0;
@@ -224,12 +224,12 @@ class CertifyingObserver final : public BoardObserver<double> {
 
   // The turn's anchor, exactly as the spinner holds it (its saved state: t0, phase; quarter).
   void turnOf(const Spinner<double>& spinner, SpinnerSnapshot& out) {
-    flipperState_.reals.clear();
-    flipperState_.ints.clear();
-    spinner.saveState(flipperState_);
-    out.t0 = flipperState_.reals.at(0);
-    out.phase = flipperState_.reals.at(1);
-    out.quarter = int(flipperState_.ints.at(0));
+    savedState_.reals.clear();
+    savedState_.ints.clear();
+    spinner.saveState(savedState_);
+    out.t0 = savedState_.reals.at(0);
+    out.phase = savedState_.reals.at(1);
+    out.quarter = int(savedState_.ints.at(0));
   }
 
   void forget(const Event<double>& e) {
@@ -359,7 +359,7 @@ class CertifyingObserver final : public BoardObserver<double> {
   std::vector<Event<double>> live_;
   BoardSnapshot snapshot_;
   bool snapshotTaken_ = false;
-  GizmoState<double> flipperState_;  // scratch for swingOf and turnOf
+  GizmoState<double> savedState_;  // scratch for swingOf and turnOf
 };
 
 }  // namespace

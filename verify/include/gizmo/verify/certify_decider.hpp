@@ -1,9 +1,9 @@
 #pragma once
 // One decision at one rung: the executed event against every event that could have come
 // first, with the kernel's gap searches (certify_kernel.hpp, and certify_swing.hpp for swinging
-// flippers and turning spinners). A template over the interval type, like the kernel; only certify_rungs.cpp
-// instantiates it (built with -frounding-math, and with sin, cos and π for the interval type in
-// scope).
+// flippers and turning spinners). A template over the interval type, like the kernel; only
+// certify_rungs.cpp instantiates it (built with -frounding-math, and with sin, cos and π for the
+// interval type in scope).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -51,9 +51,11 @@ class Decider {
     axes_.clear();
     for (const FlipperSnapshot& f : snap.flippers)
       if (f.swinging) axes_.push_back(swingAxisOf<I>(layout_.gizmos[std::size_t(f.id)], f, snap.now));
-    for (const SpinnerSnapshot& sp : snap.spinners)
-      if (sp.turning)
-        for (int arm = 0; arm < 4; ++arm) axes_.push_back(spinnerArmAxisOf<I>(layout_.gizmos[std::size_t(sp.id)], sp, arm, snap.now));
+    for (const SpinnerSnapshot& sp : snap.spinners) {
+      if (!sp.turning) continue;
+      const LayoutGizmo& spinner = layout_.gizmos[std::size_t(sp.id)];
+      for (int arm = 0; arm < 4; ++arm) axes_.push_back(spinnerArmAxisOf<I>(spinner, sp, arm, snap.now));
+    }
 
     best_ = RungOutcome{};
     best_.verdict = Verdict::Certified;
