@@ -57,14 +57,19 @@ TEST(Box2dMapping, PolygonsAreInsetByTheSkinSoThatFacesCoincide) {
     for (const Vec2<double>& p : e.points) EXPECT_TRUE(p.x == -0.01 || p.x == 20.01 || p.y == -0.01 || p.y == 20.01);
 }
 
+// A 2 × 2 gizmo of `type` whose box's low corner is (x, y).
+GizmoSpec twoByTwo(GizmoType type, const char* name, int x, int y) {
+  GizmoSpec g;
+  g.type = type;
+  g.name = name;
+  g.x = x;
+  g.y = y;
+  g.width = g.height = 2;
+  return g;
+}
+
 TEST(Box2dMapping, FlipperIsAKinematicCapsuleAboutItsPivot) {
-  GizmoSpec f;
-  f.type = GizmoType::RightFlipper;
-  f.name = "RF";
-  f.x = 11;
-  f.y = 2;
-  f.width = f.height = 2;
-  const Box2dBody body = box2dBodyOf(f);
+  const Box2dBody body = box2dBodyOf(twoByTwo(GizmoType::RightFlipper, "RF", 11, 2));
   EXPECT_TRUE(body.kinematic);
   EXPECT_EQ(body.origin.x, 12.75);
   EXPECT_EQ(body.origin.y, 2.25);
@@ -75,13 +80,7 @@ TEST(Box2dMapping, FlipperIsAKinematicCapsuleAboutItsPivot) {
 }
 
 TEST(Box2dMapping, SpinnerIsAKinematicCrossAboutItsCentre) {
-  GizmoSpec g;
-  g.type = GizmoType::Spinner;
-  g.name = "S";
-  g.x = 9;
-  g.y = 9;
-  g.width = g.height = 2;
-  const Box2dBody body = box2dBodyOf(g);
+  const Box2dBody body = box2dBodyOf(twoByTwo(GizmoType::Spinner, "S", 9, 9));
   EXPECT_TRUE(body.kinematic);
   EXPECT_EQ(body.origin.x, 10.0);
   EXPECT_EQ(body.origin.y, 10.0);
