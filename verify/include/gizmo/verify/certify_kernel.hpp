@@ -222,11 +222,19 @@ Side contactSideAtStart(const Gap<I>& gap) {
   const I& u = gap.u.c[0];
   const I& du = gap.u.c[1];
   const I& ddu = gap.u.c[2];  // half the acceleration along: the same sign
+  // Moving out over the end: the rate towards it negative, or exactly zero and the acceleration
+  // negative (movingOut in leavingOverEnd).
+  auto movingOut = [](const I& rate, const I& accel) -> Tri {
+    if (certainlyNegative(rate)) return Tri::Yes;
+    if (!isExactZero(rate)) return certainlyPositive(rate) ? Tri::No : Tri::Unknown;
+    if (certainlyNegative(accel)) return Tri::Yes;
+    return certainlyNotAfter(I(0.0), accel) ? Tri::No : Tri::Unknown;
+  };
   auto leaving = [&](const I& distance, const I& rate, const I& accel) -> Tri {
     if (certainlyBefore(gap.resolution, distance)) return Tri::No;  // not at the end
-    if (certainlyPositive(rate) || (isExactZero(rate) && !certainlyNegative(accel))) return Tri::No;  // not moving out
-    const bool out = certainlyNegative(rate) || (isExactZero(rate) && certainlyNegative(accel));
-    return out && certainlyNotAfter(distance, gap.resolution) ? Tri::Yes : Tri::Unknown;
+    const Tri out = movingOut(rate, accel);
+    if (out == Tri::No) return Tri::No;
+    return out == Tri::Yes && certainlyNotAfter(distance, gap.resolution) ? Tri::Yes : Tri::Unknown;
   };
   const Tri atA = leaving(u, du, ddu), atB = leaving(I(gap.length - u), I(-du), I(-ddu));
   if (atA == Tri::Yes || atB == Tri::Yes) return Side::Outside;
