@@ -319,28 +319,39 @@ TYPED_TEST(FirstEntry, EmptyAndDegenerateWindows) {
   EXPECT_TRUE(*r == inside);
 }
 
+// Gaps of a falling ball near a circle, as circleTimeOfImpact forms them: from just touching (the
+// ball has just bounced off it) to 10^-3 away, slow and fast, leaving and closing, over the
+// horizons the board uses.
+template <class Real>
+struct NearCircleGap {
+  std::array<Real, 5> c;
+  Real hi;
+};
+template <class Real>
+NearCircleGap<Real> nearCircleGap(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const double reach = 0.75, gravity = 25;
+  const double angle = 3.14159 * unit(rng), gapAway = std::ldexp(std::abs(unit(rng)), -int(10 + 30 * std::abs(unit(rng))));
+  const double speed = std::ldexp(std::abs(unit(rng)), -int(8 * std::abs(unit(rng))));
+  const double heading = 3.14159 * unit(rng);
+  const double limit = 0.05 * std::abs(unit(rng)) + 1e-4;
+  const Real dx = fd<Real>((reach + gapAway) * std::cos(angle)), dy = fd<Real>((reach + gapAway) * std::sin(angle));
+  const Real vx = fd<Real>(speed * std::cos(heading)), vy = fd<Real>(speed * std::sin(heading));
+  const Real ay = fd<Real>(gravity), r = fd<Real>(reach);
+  return {{Real(dx * dx + dy * dy - r * r), Real(Real(2) * (dx * vx + dy * vy)), Real(vx * vx + vy * vy + dy * ay),
+           Real(vy * ay), Real(ay * ay / Real(4))},
+          fd<Real>(limit)};
+}
+
 // The bounds that settle gaps before the derivative cascade (detail::noEntryByBounds) must give
-// exactly the cascade's answer. Gaps of a falling ball near a circle, as circleTimeOfImpact forms
-// them: from just touching (the ball has just bounced off it) to 10^-3 away, slow and fast,
-// leaving and closing, over the horizons the board uses. Fixed seed 23, so the run repeats.
+// exactly the cascade's answer, on near-circle gaps. Fixed seed 23, so the run repeats.
 TYPED_TEST(FirstEntryWide, BoundsAnswerAsTheCascadeDoes) {
   using Real = TypeParam;
   std::mt19937_64 rng(23);
-  std::uniform_real_distribution<double> unit(-1, 1);
-  const double reach = 0.75, gravity = 25;
   int settledByBounds = 0, entries = 0;
   const int cases = 4000;
   for (int k = 0; k < cases; ++k) {
-    const double angle = 3.14159 * unit(rng), gapAway = std::ldexp(std::abs(unit(rng)), -int(10 + 30 * std::abs(unit(rng))));
-    const double speed = std::ldexp(std::abs(unit(rng)), -int(8 * std::abs(unit(rng))));
-    const double heading = 3.14159 * unit(rng);
-    const double limit = 0.05 * std::abs(unit(rng)) + 1e-4;
-    const Real dx = fd<Real>((reach + gapAway) * std::cos(angle)), dy = fd<Real>((reach + gapAway) * std::sin(angle));
-    const Real vx = fd<Real>(speed * std::cos(heading)), vy = fd<Real>(speed * std::sin(heading));
-    const Real ay = fd<Real>(gravity), r = fd<Real>(reach);
-    const std::array<Real, 5> c{Real(dx * dx + dy * dy - r * r), Real(Real(2) * (dx * vx + dy * vy)),
-                                Real(vx * vx + vy * vy + dy * ay), Real(vy * ay), Real(ay * ay / Real(4))};
-    const Real hi = fd<Real>(limit);
+    const auto [c, hi] = nearCircleGap<Real>(rng);
     const gm::detail::Quartic<Real> g(c);
     const Real gLo = g.value(Real(0));
     if (gLo <= 0 && g.slope(Real(0)) < 0) continue;  // an entry at 0: decided before either
@@ -357,6 +368,73 @@ TYPED_TEST(FirstEntryWide, BoundsAnswerAsTheCascadeDoes) {
   // Both kinds are common enough that the comparison means something.
   EXPECT_GT(settledByBounds, cases / 10);
   EXPECT_GT(entries, cases / 10);
+}
+
+// Quartic::value answers from plain Horner wherever that settles the sign: it must give the
+// sign and the zeros of compensated Horner everywhere, the roots' neighbourhoods included, where
+// plain Horner's rounding is as large as g. Near-circle gaps, seed 29; the points: the window's
+// ends, 16 random ones, and each entry with the values of Real on either side of it.
+TYPED_TEST(FirstEntryWide, ValueHasTheSignOfCompensatedHorner) {
+  using Real = TypeParam;
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> share(0, 1);
+  int points = 0, plain = 0, nearRoots = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const auto [c, hi] = nearCircleGap<Real>(rng);
+    const gm::detail::Quartic<Real> g(c);
+    std::vector<Real> at{Real(0), hi};
+    for (int i = 0; i < 16; ++i) at.push_back(Real(hi * fd<Real>(share(rng))));
+    if (const std::optional<Real> entry = gm::firstEntry(c, Real(0), hi); entry && Real(0) < *entry) {
+      const Real ulp = ulpOf(*entry);
+      for (int i = -2; i <= 2; ++i) at.push_back(Real(*entry + Real(i) * ulp));
+      ++nearRoots;
+    }
+    for (const Real& t : at) {
+      const Real quick = g.value(t), exact = g.compensatedValue(t);
+      ASSERT_EQ(quick > 0, exact > 0) << "case " << k << " t " << gizmo::toDouble(t);
+      ASSERT_EQ(quick == 0, exact == 0) << "case " << k << " t " << gizmo::toDouble(t);
+      plain += quick == exact ? 0 : 1;  // differing bits: plain Horner answered
+      ++points;
+    }
+  }
+  EXPECT_GT(nearRoots, 400);
+  std::cout << "[ value ] " << gizmo::scalarName<Real>() << ": " << points << " points, " << plain
+            << " answered by plain Horner with other bits than compensated Horner\n";
+}
+
+// An entry is the last value of Real before the crossing: g > 0 there and <= 0 at the next value
+// up (compensated Horner, the most accurate evaluation at hand). And it does not depend on where
+// the search starts: solveEntry from any start inside a bracket of the crossing ends on it.
+TYPED_TEST(FirstEntryWide, EntryIsTheLastValueBeforeTheCrossingFromAnyStart) {
+  using Real = TypeParam;
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> share(0, 1);
+  int entries = 0, bracketed = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const auto [c, hi] = nearCircleGap<Real>(rng);
+    const gm::detail::Quartic<Real> g(c);
+    const std::optional<Real> entry = gm::firstEntry(c, Real(0), hi);
+    if (!entry || !(Real(0) < *entry) || g.compensatedValue(*entry) == 0) continue;
+    const Real ulp = ulpOf(*entry);
+    ASSERT_GT(g.compensatedValue(*entry), 0) << "case " << k;
+    ASSERT_LE(g.compensatedValue(Real(*entry + ulp)), 0) << "case " << k;
+    ++entries;
+    // A bracket a thousandth of the entry wide on either side, where g crosses once.
+    const Real a = *entry * fd<Real>(0.999), b = *entry * fd<Real>(1.001);
+    if (!(g.value(a) > 0 && g.value(b) < 0 && g.slope(a) < 0 && g.slope(b) < 0)) continue;
+    ++bracketed;
+    const auto value = [&g](const Real& t) -> Real { return g.value(t); };
+    const auto slope = [&g](const Real& t) -> Real { return g.slope(t); };
+    const Real fb = g.value(b);
+    ASSERT_TRUE(gm::detail::solveEntry(value, slope, a, b, fb) == *entry) << "case " << k << ", from the midpoint";
+    for (int i = 0; i < 8; ++i) {
+      const Real start = Real(a + Real(b - a) * fd<Real>(share(rng)));
+      ASSERT_TRUE(gm::detail::solveEntry(value, slope, a, b, fb, std::optional<Real>(start)) == *entry)
+          << "case " << k << ", from " << gizmo::toDouble(start);
+    }
+  }
+  EXPECT_GT(entries, 400);
+  EXPECT_GT(bracketed, 200);
 }
 
 // Many polynomials from random dyadic roots (exact coefficients, exact signs at dyadic points):

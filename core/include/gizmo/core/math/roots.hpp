@@ -16,16 +16,19 @@
 // bounds on |g'| and |g''| that hold on the whole interval.
 //
 // The returned time is the end of the final bracket that lies at or before the entry: either a
-// point where g evaluates to exactly 0, or the last point found with g > 0 (bracket width
-// <= 2 eps |t|). So the ball is not reported overlapping at the returned time, except in the
-// t = lo case, where it already was, and in the noise-level cases below. Accuracy: a few ulps
-// plus (error of g as evaluated) / |g'| at the root.
+// point where g evaluates to exactly 0, or the last point with g > 0, the bracket's other end
+// being its neighbouring value of Real. So the time is the last Real before the crossing as g
+// is evaluated, a function of g alone and not of the path the search took, and the ball is not
+// reported overlapping at it, except in the t = lo case, where it already was, and in the
+// noise-level cases below. Accuracy: an ulp plus (error of g as evaluated) / |g'| at the root.
 //
-// Polynomials are evaluated by compensated Horner, i.e. as if in twice Real's precision, so even
-// two roots 1e-9 apart are told apart in double. Smooth gaps are evaluated by the caller's F.
-// Either way decisions follow the signs of g as evaluated: where |g| is below its evaluation
-// error (at an exact tangency, say) a touch, a near miss and a very shallow dip can be confused.
+// Polynomials are evaluated so that their signs are those of compensated Horner, i.e. of g
+// evaluated as if in twice Real's precision, so even two roots 1e-9 apart are told apart in
+// double. Smooth gaps are evaluated by the caller's F. Either way decisions follow the signs of
+// g as evaluated: where |g| is below its evaluation error (at an exact tangency, say) a touch, a
+// near miss and a very shallow dip can be confused.
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -63,11 +66,32 @@ struct Quartic {
       }
     }
   }
+  // g(t), with the sign and the zeros of compensatedValue(t): by plain Horner where that leaves
+  // no doubt of them, which is everywhere but near a root. Plain Horner is off by at most
+  // gamma_2d = 2d u / (1 - 2d u) times sum |c_i| |t|^i (Higham, Accuracy and Stability, 5.1;
+  // u = eps / 2, under 4.01 eps for d = 4), and compensated Horner by u |g| plus
+  // gamma_2d^2 times that sum. Beyond 32 eps times the sum, as computed, both have g's sign and
+  // neither is zero; the minimum-normal test keeps underflow, whose errors are absolute, out. Only
+  // for IEEE formats, whose rounding that bound describes (not ppc64el's double-double).
+  Real value(const Real& t) const {
+    if constexpr (std::numeric_limits<Real>::is_iec559) {
+      Real s = c[degree];
+      Real size = absOf(s);
+      const Real at = absOf(t);
+      for (int i = degree - 1; i >= 0; --i) {
+        s = s * t + c[i];
+        size = size * at + absOf(c[i]);
+      }
+      const Real eps = epsilonOf<Real>();
+      if (Real(32) * eps * size < absOf(s) && std::numeric_limits<Real>::min() < eps * size) return s;
+    }
+    return compensatedValue(t);
+  }
   // g(t), by compensated Horner (Graillat, Langlois and Louvet): each step's rounding errors are
   // recovered exactly (twoProduct, twoSum) and summed alongside, so the result is as accurate as
   // plain Horner in twice Real's precision. Near a double root, where plain Horner's rounding
   // swamps g, this keeps the sign of g and thus the entry decisions right much closer in.
-  Real value(const Real& t) const {
+  Real compensatedValue(const Real& t) const {
     Real s = c[degree];
     Real error = 0;
     for (int i = degree - 1; i >= 0; --i) {
@@ -112,29 +136,28 @@ inline long solverIterationCap() {
 
 // The single entry of a bracket [a, b] with value(a) = fa > 0 >= fb = value(b): safeguarded
 // Newton-bisection that keeps the bracket. A Newton step is taken when it lands strictly inside
-// the bracket, and is at least eps * |x| long so that the bracket closes from both sides; when
-// two steps fail to halve the bracket, the next point is the midpoint. A step that is small
-// against the bracket is doubled: Newton approaches a root from one side, so its own point
-// would move only that end, and the far end would come in by bisection alone (about a hundred
-// steps in double); twice the step, an error estimate, lands past the root and brings the far
-// end in too. Stops when value() is
-// exactly 0 (returns that point), when the bracket is narrower than 2 eps max(|a|, |b|) or holds
-// no representable point inside, or after solverIterationCap() steps; then returns a, the last
-// point with value > 0, which lies at or before the root.
+// the bracket and is less than half the step before it (the first: half the bracket); otherwise
+// the next point is the midpoint. A step is at least eps * max(|a|, |b|) long, so that once
+// Newton has converged the next point lies across the root and closes the bracket from the far
+// side. Stops when value() is exactly 0 (returns that point), when no value of Real lies
+// strictly inside the bracket, or after solverIterationCap() steps; then returns a, the last
+// point with value > 0, which lies at or before the root. Ending on neighbouring values makes
+// the answer the last Real before the crossing whatever the start and the steps (wherever the
+// sign of value() changes once there), so a better start or a cheaper value() can only make the
+// search faster, never move a decision. (A format whose values can be closer than eps |x|, as
+// ppc64el's double-double long double, also stops at a bracket narrower than eps max(|a|, |b|) / 4,
+// which an IEEE format's neighbours never are.)
 //
 // `guess`, when it lies strictly inside the bracket, is where the search starts (a closed-form
-// root of a quadratic: Newton then confirms it in a step or two instead of bisecting).
+// root of a quadratic, or the secant through the piece's ends).
 template <class Real, class Value, class Slope>
 Real solveEntry(const Value& value, const Slope& slope, Real a, Real b, Real fb,
                 const std::optional<Real>& guess = std::nullopt) {
   const Real eps = epsilonOf<Real>();
   const Real two = 2;
   const long cap = solverIterationCap<Real>();
-  Real width = b - a;
-  Real widthBefore = width;
-  Real widthTwoBefore = two * width;
-  bool bisectNext = false;
-  Real x = guess && a < *guess && *guess < b ? *guess : Real(a + width / two);
+  Real stepBefore = b - a;
+  Real x = guess && a < *guess && *guess < b ? *guess : Real(a + (b - a) / two);
   for (long iteration = 0; iteration < cap && fb != 0; ++iteration) {
     const Real fx = value(x);
     if (fx > 0) {
@@ -144,29 +167,25 @@ Real solveEntry(const Value& value, const Slope& slope, Real a, Real b, Real fb,
       fb = fx;
       if (fb == 0) break;
     }
-    width = b - a;
-    const Real scale = maxOf(absOf(a), absOf(b));
-    if (width <= two * eps * scale) break;
-    const Real mid = a + width / two;
+    const Real mid = a + (b - a) / two;
     if (!(a < mid && mid < b)) break;
-    bisectNext = bisectNext || width > widthTwoBefore / two;
-    widthTwoBefore = widthBefore;
-    widthBefore = width;
+    const Real scale = maxOf(absOf(a), absOf(b));
+    if (Real(4) * Real(b - a) <= eps * scale) break;
     Real next = mid;
-    if (!bisectNext) {
-      const Real d = slope(x);
-      if (d < 0) {
-        Real step = -fx / d;
-        const Real minStep = eps * scale;
-        if (fx > 0 && step < minStep) step = minStep;
-        if (fx < 0 && step > -minStep) step = -minStep;
-        if (Real(4) * absOf(step) < width) step = two * step;
-        const Real candidate = x + step;
-        if (a < candidate && candidate < b) next = candidate;
-      }
+    Real step = 0;
+    const Real d = slope(x);
+    if (d < 0) {
+      step = -fx / d;
+      const Real minStep = eps * scale;
+      if (fx > 0 && step < minStep) step = minStep;
+      if (fx < 0 && step > -minStep) step = -minStep;
+    }
+    const Real candidate = x + step;
+    if (d < 0 && a < candidate && candidate < b && two * absOf(step) < stepBefore) {
+      next = candidate;
+      stepBefore = absOf(step);
     } else {
-      bisectNext = false;
-      widthTwoBefore = two * width;  // judge the next steps afresh
+      stepBefore = b - a;  // bisected: the next Newton step is judged against the new bracket
     }
     x = next;
   }
