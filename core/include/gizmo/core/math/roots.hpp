@@ -135,21 +135,23 @@ inline long solverIterationCap() {
 }
 
 // The single entry of a bracket [a, b] with value(a) = fa > 0 >= fb = value(b): safeguarded
-// Newton-bisection that keeps the bracket. A Newton step is taken when it lands strictly inside
-// the bracket and is less than half the step before it (the first: half the bracket); otherwise
-// the next point is the midpoint. A step is at least eps * max(|a|, |b|) long, so that once
-// Newton has converged the next point lies across the root and closes the bracket from the far
-// side. Stops when value() is exactly 0 (returns that point), when no value of Real lies
-// strictly inside the bracket, or after solverIterationCap() steps; then returns a, the last
-// point with value > 0, which lies at or before the root. Ending on neighbouring values makes
-// the answer the last Real before the crossing whatever the start and the steps (wherever the
-// sign of value() changes once there), so a better start or a cheaper value() can only make the
-// search faster, never move a decision. (A format whose values can be closer than eps |x|, as
-// ppc64el's double-double long double, also stops at a bracket narrower than eps max(|a|, |b|) / 4,
-// which an IEEE format's neighbours never are.)
+// Newton that keeps the bracket. A Newton step is taken when it lands strictly inside the
+// bracket and is less than half the step before it (the first: half the bracket); one that
+// leaves the bracket gives way to the secant through its ends (the far end may lie next to the
+// root, when an earlier step landed just past it), and one that does not halve to the midpoint.
+// Once Newton has converged from one side (a step below eps max(|a|, |b|)), the next point lies
+// that far across the root, twice as far each time that falls short, to close the far end.
+// Stops when value() is exactly 0 (returns that point), when no value of Real lies strictly
+// inside the bracket, or after solverIterationCap() steps; then returns a, the last point with
+// value > 0, which lies at or before the root. Ending on neighbouring values makes the answer the
+// last Real before the crossing whatever the start and the steps (wherever the sign of value()
+// changes once there), so a better start or a cheaper value() can only make the search faster,
+// never move a decision. (A format whose values can be closer than eps |x|, as ppc64el's
+// double-double long double, also stops at a bracket narrower than eps max(|a|, |b|) / 4, which an
+// IEEE format's neighbours never are.)
 //
 // `guess`, when it lies strictly inside the bracket, is where the search starts (a closed-form
-// root of a quadratic, or the secant through the piece's ends).
+// root of a quadratic, or a model of the piece: entryByCascade).
 template <class Real, class Value, class Slope>
 Real solveEntry(const Value& value, const Slope& slope, Real a, Real b, Real fb,
                 const std::optional<Real>& guess = std::nullopt) {
@@ -157,11 +159,14 @@ Real solveEntry(const Value& value, const Slope& slope, Real a, Real b, Real fb,
   const Real two = 2;
   const long cap = solverIterationCap<Real>();
   Real stepBefore = b - a;
+  Real probe = 0;  // the last step across a converged root, 0 when the last step was Newton's
+  std::optional<Real> fa;
   Real x = guess && a < *guess && *guess < b ? *guess : Real(a + (b - a) / two);
   for (long iteration = 0; iteration < cap && fb != 0; ++iteration) {
     const Real fx = value(x);
     if (fx > 0) {
       a = x;
+      fa = fx;
     } else {
       b = x;
       fb = fx;
@@ -172,20 +177,35 @@ Real solveEntry(const Value& value, const Slope& slope, Real a, Real b, Real fb,
     const Real scale = maxOf(absOf(a), absOf(b));
     if (Real(4) * Real(b - a) <= eps * scale) break;
     Real next = mid;
-    Real step = 0;
     const Real d = slope(x);
     if (d < 0) {
-      step = -fx / d;
+      Real step = -fx / d;
       const Real minStep = eps * scale;
-      if (fx > 0 && step < minStep) step = minStep;
-      if (fx < 0 && step > -minStep) step = -minStep;
-    }
-    const Real candidate = x + step;
-    if (d < 0 && a < candidate && candidate < b && two * absOf(step) < stepBefore) {
-      next = candidate;
-      stepBefore = absOf(step);
+      if (absOf(step) < minStep) {
+        // Converged from one side: step across the root, twice as far as last time if that
+        // step fell short, so that the far end comes in after a step or two.
+        probe = probe == 0 ? minStep : Real(two * probe);
+        step = fx > 0 ? probe : Real(-probe);
+      } else {
+        probe = 0;
+      }
+      const Real candidate = x + step;
+      const bool inside = a < candidate && candidate < b;
+      if (inside && (probe != 0 || two * absOf(step) < stepBefore)) {
+        next = candidate;
+        stepBefore = absOf(step);
+      } else {
+        stepBefore = b - a;
+        if (!inside && probe == 0 && fa) {
+          // Newton overshot the bracket, whose far end may lie next to the root: the secant
+          // through the ends goes there in a step where halving the bracket takes fifty.
+          const Real secant = a + *fa * (b - a) / (*fa - fb);
+          if (a < secant && secant < b) next = secant;
+        }
+      }
     } else {
-      stepBefore = b - a;  // bisected: the next Newton step is judged against the new bracket
+      probe = 0;
+      stepBefore = b - a;
     }
     x = next;
   }
@@ -367,9 +387,12 @@ std::optional<Real> entryByCascade(const Quartic<Real>& g, const Real& lo, const
   // root only where there is an entry to report.
   RootList<Real> direct;
   bool directKnown = false;
-  // Beyond degree 2 the secant through the piece's ends starts the search: on a monotone piece
-  // it is usually close, and the bracketed search still decides.
-  auto guessIn = [&](const Real& a, const Real& b, const Real& ga, const Real& gb) -> std::optional<Real> {
+  // Beyond degree 2 the search starts where a simple model of the piece crosses zero: at an end
+  // that is a turning point (g' = 0 there) g starts like a parabola, so the parabola with its
+  // vertex there through the other end; otherwise the secant through the ends. The guess only
+  // saves steps: the entry is the same from any start (solveEntry).
+  auto guessIn = [&](const Real& a, const Real& b, const Real& ga, const Real& gb, bool aTurns,
+                     bool bTurns) -> std::optional<Real> {
     if (!directKnown) {
       if (g.degree == 1) direct.addIfNew(Real(-c[0] / c[1]));
       if (g.degree == 2) quadraticRoots(c[2], c[1], c[0], direct);
@@ -377,7 +400,13 @@ std::optional<Real> entryByCascade(const Quartic<Real>& g, const Real& lo, const
     }
     for (int k = 0; k < direct.n; ++k)
       if (a <= direct.t[k] && direct.t[k] <= b) return direct.t[k];
-    if (g.degree > 2 && gb < ga) return Real(a + ga * (b - a) / (ga - gb));
+    if (g.degree > 2 && gb < ga) {
+      if constexpr (!kExactScalar<Real>) {
+        if (aTurns) return Real(a + (b - a) * sqrtOf(Real(ga / (ga - gb))));
+        if (bTurns) return Real(b - (b - a) * sqrtOf(Real(-gb / (ga - gb))));
+      }
+      return Real(a + ga * (b - a) / (ga - gb));
+    }
     return std::nullopt;
   };
   Real a = lo;
@@ -388,7 +417,7 @@ std::optional<Real> entryByCascade(const Quartic<Real>& g, const Real& lo, const
     if (ga > 0 && gb <= 0 && (gb < 0 || goesNegativeAfter(g, b))) {
       Real t = b;
       if (gb != 0) {
-        const std::optional<Real> guess = guessIn(a, b, ga, gb);
+        const std::optional<Real> guess = guessIn(a, b, ga, gb, i > 0, i < turns.n);
         if constexpr (kExactScalar<Real>) {
           // An exact scalar takes the closed-form root as it is: it is the entry, or the entry
           // is not rational (quadraticRoots has thrown already for a surd) and no search could
