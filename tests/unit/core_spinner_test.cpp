@@ -113,6 +113,33 @@ TEST(Spinner, ABallAtRestBesideItIsStruckWhenItStarts) {
   EXPECT_GT(lengthSquared(board->ballById(*board->find("K")).velocityAt(board->now())), 0.0);
 }
 
+// A spinner connected to itself starts and stops at each of its own hits: one instant, no motion.
+// A ball let go 3·10⁻⁷ L above the V between the end of its right arm (end circle at (10.5, 10))
+// and a square's side (x = 11) meets the arm slowly and comes to rest there (the cradle rule),
+// and stays: the start that the hit makes, undone by the trigger at that instant, releases
+// nothing. Before, every hit woke it and gravity struck it again at once, for ever (at one
+// instant here; in campaign seed 2536957963, case 65, a nanosecond apart, under the stall guard).
+TEST(Spinner, ConnectedToItselfItKeepsABallWedgedOnIt) {
+  BoardSpec spec = emptyBoard(25, 0, 0);
+  spec.gizmos.push_back(gizmoAt(GizmoType::Spinner, "S", 9, 9, 0, 2, 2));
+  spec.gizmos.push_back(gizmoAt(GizmoType::Square, "Q", 11, 9, 0, 1, 1));
+  spec.connections.push_back(ConnectSpec{"S", "S", {}});
+  spec.balls.push_back(ballAt("K", 10.75, 9.566987, 0, 0));  // touching both at y = 10 − √0.1875
+  auto board = build(spec);
+  Recorder<double> rec;
+  board->setObserver(&rec);
+  board->setRunLimit({.events = 100000, .time = std::nullopt});
+  board->tick(1.0);
+  ASSERT_FALSE(board->stopped()) << "more than 100,000 events in 1 s";
+  const Ball<double>& ball = board->ballById(*board->find("K"));
+  EXPECT_TRUE(ball.wedged());
+  EXPECT_GE(rec.countRule(ModelRule::Wedged), 1);
+  EXPECT_EQ(rec.countRule(ModelRule::ContactEnd), 0);  // nothing woke it
+  EXPECT_FALSE(spinnerOf(*board).turning());
+  EXPECT_LT(rec.ofKind(EventKind::Collision).size(), 200u);
+  EXPECT_NEAR(ball.positionAt(board->now()).x, 10.75, 1e-6);
+}
+
 // Its still shape is the cross at the angle it stopped at: a quarter turn on is the same cross,
 // and the rest shape of its spec is the cross at load.
 TEST(Spinner, ItsRestShapeIsTheCross) {

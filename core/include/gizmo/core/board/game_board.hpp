@@ -124,7 +124,7 @@ class GameBoard final : private BoardAccess<Real> {
   void reportRule(ModelRule rule, GizmoId gizmo, GizmoId other) override {
     if (observer_) observer_->modelRuleApplied(now_, rule, gizmo, other);
   }
-  void releaseContactsOn(GizmoId g) override;
+  void releaseContactsOn(GizmoId g) override { starting_.push_back(g); }
   bool roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const override;
   bool cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const override;
   bool jammed() const override { return collisionsInWindow_ > kJamThreshold; }
@@ -144,6 +144,8 @@ class GameBoard final : private BoardAccess<Real> {
   void advanceTo(const Real& t);
   void execute(const Event<Real>& e);
   void applyEvent(const Event<Real>& e);
+  void releaseContactsOfStarted();
+  void releaseContactsNow(GizmoId g);
   void fireTriggersOf(GizmoId source);
   void performAction(GizmoId target) override;
   void recomputePending();
@@ -208,6 +210,8 @@ class GameBoard final : private BoardAccess<Real> {
 
   EventQueue<Real> queue_;
   std::vector<GizmoId> recompute_;
+  // Gizmos that started to move during the event being applied; empty between events.
+  std::vector<GizmoId> starting_;
   std::vector<GizmoId> recomputing_;  // recomputePending's working list, kept for its capacity
   std::vector<GizmoId> candidates_;
   IdSet candidateSet_;                 // gathers candidates_ in id order, without repeats

@@ -460,6 +460,7 @@ void GameBoard<Real>::applyEvent(const Event<Real>& e) {
     case EventKind::EndOfTick:
       break;
   }
+  releaseContactsOfStarted();
 }
 
 template <class Real>
@@ -492,8 +493,17 @@ void GameBoard<Real>::schedule(EventKind kind, const Real& time, GizmoId a, Gizm
   if (observer_) observer_->eventScheduled(e);
 }
 
+// BoardAccess::releaseContactsOn, once the event's actions are done: each gizmo that started to
+// move and is still in motion, in the order they started.
 template <class Real>
-void GameBoard<Real>::releaseContactsOn(GizmoId g) {
+void GameBoard<Real>::releaseContactsOfStarted() {
+  for (std::size_t k = 0; k < starting_.size(); ++k)
+    if (gizmos_[static_cast<std::size_t>(starting_[k])]->inMotionAt(now_)) releaseContactsNow(starting_[k]);
+  starting_.clear();
+}
+
+template <class Real>
+void GameBoard<Real>::releaseContactsNow(GizmoId g) {
   // "Beside": the ball's box within the broad phase's margin of g's box. A wedged ball rests
   // against a second surface besides the one it slides on or was struck by, and that surface
   // may be g: a ball sliding down a triangle's slope into a still flipper's side rests there,

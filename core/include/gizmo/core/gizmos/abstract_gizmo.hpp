@@ -49,8 +49,12 @@ class BoardAccess {
   // Many hits at this one instant: balls are jammed between surfaces with no room to move, and
   // hits now leave no rebound along their normal.
   virtual bool jammed() const = 0;
-  // Gizmo g is about to move: every ball sliding on it leaves that contact, and every ball at
-  // rest (wedged) beside it wakes, since what g held up it may hold no more.
+  // Gizmo g starts to move now. Once the event's actions are done, if g is still in motion
+  // (inMotionAt), every ball sliding on it leaves that contact and every ball at rest (wedged)
+  // beside it wakes, since what g held up it may hold no more. One that was stopped again at
+  // this instant never moved, and what rests on it stays: a spinner connected to itself starts
+  // and stops at each of its own hits, and a ball wedged on it was woken by every hit and struck
+  // again by gravity a nanosecond later, for ever (campaign seed 2536957963, case 65).
   virtual void releaseContactsOn(GizmoId g) = 0;
   // Whether ball `ball` could be put with its centre at p now: inside the walls, clear of every
   // free ball and of the box of every gizmo but `ignore` (boxes, not shapes: a cautious answer).
@@ -118,6 +122,9 @@ class AbstractGizmo {
   // yet a ball at rest beside it may still be struck, so the board predicts those pairs too and
   // the gizmo bounds its own search.
   virtual bool movesForEver() const { return false; }
+  // Whether it is moving at `now` (a flipper between its stops, a turning spinner): what decides
+  // whether its start releases what rests on it (BoardAccess::releaseContactsOn).
+  virtual bool inMotionAt(const Real& /*now*/) const { return false; }
 
   // What changes as the board runs (board_state.hpp); gizmos that never change keep nothing.
   // restoreState reads back what saveState wrote and checks the ids it finds.

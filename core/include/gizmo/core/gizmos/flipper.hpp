@@ -70,6 +70,9 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     board.markForRecompute(this->id());
   }
 
+  // A swing reversed at the instant it began (two triggers at once) stops there: no motion.
+  bool inMotionAt(const Real& now) const override { return direction_ != 0 && now < stopTime(); }
+
   std::optional<Real> predictionHorizon() const override {
     if (direction_ == 0) return std::nullopt;
     return stopTime();

@@ -51,6 +51,7 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
 
   bool turning() const { return turning_; }
   bool movesForEver() const override { return turning_; }
+  bool inMotionAt(const Real& /*now*/) const override { return turning_; }
 
   // Arm k ∈ {0, 1, 2, 3} at time t: a capsule from the centre, turning from there.
   SwingingAxis<Real> armAt(int k, const Real& t) const {
