@@ -70,7 +70,7 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     board.markForRecompute(this->id());
   }
 
-  // A swing reversed at the instant it began (two triggers at once) stops there: no motion.
+  // A swing reversed at the instant it began ends there, and moved nothing.
   bool inMotionAt(const Real& now) const override { return direction_ != 0 && now < stopTime(); }
 
   std::optional<Real> predictionHorizon() const override {
