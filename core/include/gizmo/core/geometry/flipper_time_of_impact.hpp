@@ -257,6 +257,7 @@ std::optional<SwingContact<Real>> swingingCapsuleTimeOfImpact(const Trajectory<R
     const Real travel = length(ball.v) * limit + half * length(ball.a) * limit * limit;
     const Real far = axis.length + reach + travel;
     if (far * far < lengthSquared(ball.p - axis.pivot)) return best;
+    if (!pathMayComeWithin(ball, limit, axis.pivot, Real(axis.length + reach))) return best;
   }
   for (int side = 0; side < 2; ++side) {
     const SideGap<Real> gap{ball, axis, reach, side == 0 ? Real(1) : Real(-1)};

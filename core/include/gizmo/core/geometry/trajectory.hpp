@@ -54,4 +54,23 @@ Box<Real> sweptBox(const Trajectory<Real>& t, const Real& T, const Real& radius,
   return b;
 }
 
+// Whether the path over [0, T] may come within `radius` of c; false only where it cannot. The
+// path stays within |a| T²/8 of its chord from p(0) to p(T) (p(τ) − chord(τ) = −½ a τ (T − τ)),
+// so a chord farther than radius + |a| T²/8 from c keeps the whole path away. Unlike the disc of
+// the ball's travel around p(0), this holds a fast ball that passes by at a distance away: one
+// at 5000 L/s travels 250 L in a tick, and its disc covers the board. A margin of 1/1024 on the
+// distance covers the rounding of these products.
+template <class Real>
+bool pathMayComeWithin(const Trajectory<Real>& t, const Real& T, const Vec2<Real>& c, const Real& radius) {
+  const Real bulge = length(t.a) * T * T / Real(8);
+  const Real near = (radius + bulge) * (Real(1) + Real(1) / Real(1024));
+  const Real near2 = near * near;
+  const Vec2<Real> d = t.positionAt(T) - t.p, w = c - t.p;
+  const Real along = dot(w, d), chord2 = lengthSquared(d);
+  if (!(Real(0) < along)) return !(near2 < lengthSquared(w));                        // nearest: p(0)
+  if (!(along < chord2)) return !(near2 < lengthSquared(Vec2<Real>(c - t.positionAt(T))));  // nearest: p(T)
+  const Real across = cross(w, d);
+  return !(near2 * chord2 < across * across);  // distance² = across² / chord²
+}
+
 }  // namespace gizmo

@@ -98,6 +98,8 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
       const Real travel = length(t.v) * span + length(t.a) * span * span / Real(2);
       const Real reach = fromDouble<Real>(kSpinnerArmLength + kSpinnerArmRadius) + r + travel;
       if (reach * reach < lengthSquared(Vec2<Real>(t.p - centre_))) return std::nullopt;
+      const Real armsReach = fromDouble<Real>(kSpinnerArmLength + kSpinnerArmRadius) + r;
+      if (!pathMayComeWithin(t, span, centre_, armsReach)) return std::nullopt;
     }
     // A ball touching an arm now and pressed into it is hit now (as at a swinging flipper).
     for (int k = 0; k < 4; ++k) {
