@@ -118,7 +118,8 @@ TEST(Spinner, ABallAtRestBesideItIsStruckWhenItStarts) {
 // and a square's side (x = 11) meets the arm slowly and comes to rest there (the cradle rule),
 // and stays: the start that the hit makes, undone by the trigger at that instant, releases
 // nothing. Before, every hit woke it and gravity struck it again at once, for ever (at one
-// instant here; in campaign seed 2536957963, case 65, a nanosecond apart, under the stall guard).
+// instant here; in campaign seed 2536957963, case 65, a nanosecond apart, just past the stall
+// guard's 10⁻⁹ s).
 TEST(Spinner, ConnectedToItselfItKeepsABallWedgedOnIt) {
   BoardSpec spec = emptyBoard(25, 0, 0);
   spec.gizmos.push_back(gizmoAt(GizmoType::Spinner, "S", 9, 9, 0, 2, 2));

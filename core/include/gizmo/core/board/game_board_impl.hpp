@@ -497,8 +497,8 @@ void GameBoard<Real>::schedule(EventKind kind, const Real& time, GizmoId a, Gizm
 // move and is still in motion, in the order they started.
 template <class Real>
 void GameBoard<Real>::releaseContactsOfStarted() {
-  for (std::size_t k = 0; k < starting_.size(); ++k)
-    if (gizmos_[static_cast<std::size_t>(starting_[k])]->inMotionAt(now_)) releaseContactsNow(starting_[k]);
+  for (const GizmoId g : starting_)
+    if (gizmos_[static_cast<std::size_t>(g)]->inMotionAt(now_)) releaseContactsNow(g);
   starting_.clear();
 }
 

@@ -66,10 +66,11 @@ bool pathMayComeWithin(const Trajectory<Real>& t, const Real& T, const Vec2<Real
   const Real bulge = (absOf(t.a.x) + absOf(t.a.y)) * T * T / Real(8);
   const Real near = (radius + bulge) * (Real(1) + Real(1) / Real(1024));
   const Real near2 = near * near;
-  const Vec2<Real> d = t.positionAt(T) - t.p, w = c - t.p;
+  const Vec2<Real> end = t.positionAt(T);
+  const Vec2<Real> d = end - t.p, w = c - t.p;
   const Real along = dot(w, d), chord2 = lengthSquared(d);
-  if (!(Real(0) < along)) return !(near2 < lengthSquared(w));                        // nearest: p(0)
-  if (!(along < chord2)) return !(near2 < lengthSquared(Vec2<Real>(c - t.positionAt(T))));  // nearest: p(T)
+  if (!(Real(0) < along)) return !(near2 < lengthSquared(w));                   // nearest: p(0)
+  if (!(along < chord2)) return !(near2 < lengthSquared(Vec2<Real>(c - end))); // nearest: p(T)
   const Real across = cross(w, d);
   return !(near2 * chord2 < across * across);  // distance² = across² / chord²
 }

@@ -124,7 +124,7 @@ class AbstractGizmo {
   virtual bool movesForEver() const { return false; }
   // Whether it is moving at `now` (a flipper between its stops, a turning spinner): what decides
   // whether its start releases what rests on it (BoardAccess::releaseContactsOn).
-  virtual bool inMotionAt(const Real& /*now*/) const { return false; }
+  virtual bool inMotionAt(const Real& /*now*/) const { return movesForEver(); }
 
   // What changes as the board runs (board_state.hpp); gizmos that never change keep nothing.
   // restoreState reads back what saveState wrote and checks the ids it finds.

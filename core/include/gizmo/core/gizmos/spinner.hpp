@@ -51,7 +51,6 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
 
   bool turning() const { return turning_; }
   bool movesForEver() const override { return turning_; }
-  bool inMotionAt(const Real& /*now*/) const override { return turning_; }
 
   // Arm k ∈ {0, 1, 2, 3} at time t: a capsule from the centre, turning from there.
   SwingingAxis<Real> armAt(int k, const Real& t) const {
@@ -96,9 +95,9 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
     const Real span = minOf(Real(limit - now), Real(pieceEnd + quarterTime));
     {
       const Real travel = length(t.v) * span + length(t.a) * span * span / Real(2);
-      const Real reach = fromDouble<Real>(kSpinnerArmLength + kSpinnerArmRadius) + r + travel;
-      if (reach * reach < lengthSquared(Vec2<Real>(t.p - centre_))) return std::nullopt;
       const Real armsReach = fromDouble<Real>(kSpinnerArmLength + kSpinnerArmRadius) + r;
+      const Real reach = armsReach + travel;
+      if (reach * reach < lengthSquared(Vec2<Real>(t.p - centre_))) return std::nullopt;
       if (!pathMayComeWithin(t, span, centre_, armsReach)) return std::nullopt;
     }
     // A ball touching an arm now and pressed into it is hit now (as at a swinging flipper).
