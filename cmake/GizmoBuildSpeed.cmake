@@ -7,17 +7,13 @@
 # line of ours is read (2.5 s for scalar.hpp alone against 0.5 s for the standard headers it
 # uses). Parsed once per target instead, a build from scratch spends that once per target.
 #
-# Off by default under ccache: ccache caches a source compiled with a precompiled header only
-# with extra sloppiness settings, and otherwise compiles it every time, so a cached build would
-# lose more than it gains; and a unity group is compiled again whenever one of its sources
-# changes, which an edit-and-rebuild cycle feels. A fresh clone (no cache) and CI get both.
+# Both stay on under ccache (cmake/GizmoCompilerCache.cmake sets the sloppiness that lets it cache
+# a source compiled with a precompiled header). A unity group is compiled again whenever one of its
+# sources changes, which an edit-and-rebuild cycle feels: GIZMO_UNITY_BUILD=OFF for such work.
 # The asan preset and the libFuzzer build (scripts/fuzz-run.sh) turn both off: they compile
 # every source on its own, so a header that a source forgot to include cannot hide behind a
 # neighbour in its unity group, and clang is not given g++'s precompiled-header workaround.
 set(GIZMO_FRESH_BUILD_DEFAULT ON)
-if(CMAKE_CXX_COMPILER_LAUNCHER MATCHES "ccache")
-  set(GIZMO_FRESH_BUILD_DEFAULT OFF)
-endif()
 # The portable build (docs/determinism.md) has none of the Boost headers below to precompile.
 set(GIZMO_PRECOMPILE_DEFAULT ${GIZMO_FRESH_BUILD_DEFAULT})
 if(GIZMO_PORTABLE)

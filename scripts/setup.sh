@@ -7,9 +7,10 @@
 #   scripts/setup.sh [--portable | --command | PACKAGE...]
 set -euo pipefail
 
-# The portable build of the `gizmo` command (what a first `scripts/dev run` builds), then the
+# The portable build of the `gizmo` command (what a first `scripts/dev run` builds; every build
+# compiles through ccache, cmake/GizmoCompilerCache.cmake), then the
 # libraries the full command adds (multiprecision, Box2D).
-portable_packages=(cmake ninja-build g++ pkgconf libpugixml-dev libcli11-dev nlohmann-json3-dev)
+portable_packages=(cmake ninja-build g++ ccache pkgconf libpugixml-dev libcli11-dev nlohmann-json3-dev)
 command_packages=("${portable_packages[@]}" libboost-dev libgmp-dev libmpfr-dev libmpfi-dev libbox2d-dev)
 # The tests, the benchmarks and the study's charts (gizmo study runs gnuplot).
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev gnuplot-nox)

@@ -13,15 +13,11 @@
 #include "gizmo/core/board_spec.hpp"
 #include "gizmo/io/board_file.hpp"
 #include "gizmo/io/diagnostics.hpp"
-
-// CMake defines the fixtures folder; a build by hand from the repository root finds it here.
-#ifndef GIZMO_FIXTURES_DIR
-#define GIZMO_FIXTURES_DIR "fixtures"
-#endif
+#include "support/paths.hpp"
 
 namespace gizmo::io::test {
 
-inline std::filesystem::path fixturesDir() { return std::filesystem::path(GIZMO_FIXTURES_DIR); }
+inline std::filesystem::path fixturesDir() { return std::filesystem::path(gizmo::test::fixturesDir()); }
 
 inline std::string readFile(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

@@ -46,6 +46,7 @@
 #include "gizmo/replay/replay.hpp"
 #include "gizmo/replay/scalar_codec.hpp"
 #include "support/fixture_request.hpp"
+#include "support/paths.hpp"
 
 namespace {
 
@@ -55,7 +56,7 @@ using Bytes = std::vector<std::uint8_t>;
 
 // --- fixtures and files -------------------------------------------------------------------------
 
-std::string fixture(const std::string& relative) { return std::string(GIZMO_FIXTURES_DIR) + "/" + relative; }
+std::string fixture(const std::string& relative) { return test::fixturePath(relative); }
 
 // fixtures/keys/flippers.keys as run input (none if the file is missing).
 std::vector<TimedKey> flipperKeys() {

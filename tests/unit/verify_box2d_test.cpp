@@ -16,6 +16,7 @@
 #include "gizmo/verify/box2d_crosscheck.hpp"
 #include "gizmo/verify/box2d_mapping.hpp"
 #include "gizmo/verify/box2d_time_of_impact.hpp"
+#include "support/paths.hpp"
 
 namespace gizmo::verify {
 namespace {
@@ -214,7 +215,7 @@ TEST(Box2dCrosscheck, MatchingPairsSameBallSameGizmoNearestTime) {
 
 RunRequest scene(const std::string& name, double seconds) {
   RunRequest r;
-  r.board = io::readBoardFile(std::string(GIZMO_FIXTURES_DIR) + "/boards/box2d/" + name).board;
+  r.board = io::readBoardFile(test::fixturePath("boards/box2d/" + name)).board;
   r.duration = seconds;
   return r;
 }

@@ -18,6 +18,7 @@
 #include "gizmo/verify/certify.hpp"
 #include "gizmo/verify/certify_exact.hpp"
 #include "gizmo/verify/certify_qpoly.hpp"
+#include "support/paths.hpp"
 
 namespace gizmo::verify {
 namespace {
@@ -371,12 +372,12 @@ TEST(CertifyExact, RootsTheIntervalsCannotPartAreOrderedExactly) {
 }  // namespace exact
 
 TEST(CertifyLog, RefusesALogThatIsNotOfADoubleRun) {
-  replay::OpenedLog log = replay::openLog(std::string(GIZMO_FIXTURES_DIR) + "/logs/four-balls-meeting-3s-ballistic-long-double.gzlog");
+  replay::OpenedLog log = replay::openLog(test::fixturePath("logs/four-balls-meeting-3s-ballistic-long-double.gzlog"));
   EXPECT_THROW(certifyLog(log), CertifyError);
 }
 
 TEST(CertifyLog, CertifiesADoubleLogsRunAndPrintsTextAndJson) {
-  replay::OpenedLog log = replay::openLog(std::string(GIZMO_FIXTURES_DIR) + "/logs/spec-example-5s-ballistic-double.gzlog");
+  replay::OpenedLog log = replay::openLog(test::fixturePath("logs/spec-example-5s-ballistic-double.gzlog"));
   const CertifyReport r = certifyLog(log);
   expectAccounted(r);
   EXPECT_EQ(r.model, "ballistic");

@@ -10,6 +10,7 @@
 #include "gizmo/verify/study.hpp"
 #include "gizmo/verify/study_findings.hpp"
 #include "gizmo/verify/study_suite.hpp"
+#include "support/paths.hpp"
 
 namespace gizmo::verify {
 namespace {
@@ -18,7 +19,7 @@ StudyScene sceneFromFixture(const std::string& board, double seconds, double sam
   StudyScene s;
   s.name = std::filesystem::path(board).stem().string();
   s.board = board;
-  s.request.board = io::readBoardFile(std::string(GIZMO_FIXTURES_DIR) + "/boards/" + board).board;
+  s.request.board = io::readBoardFile(test::fixturePath("boards/" + board)).board;
   s.request.duration = seconds;
   s.sampleEvery = sampleEvery;
   s.stress = true;
@@ -129,7 +130,7 @@ TEST(StudyFindings, FailsFromNamesTheFirstPassingParameter) {
   EXPECT_EQ(failsFrom(s, MethodFamily::Classic), "fails at every tick");
 }
 
-// The ball of the spec example falls freely onto the absorber (physics.md §8: at 0.787401 s).
+// The ball of the spec example falls freely onto the absorber (docs/physics.md §8: at 0.787401 s).
 // The classic model's straight steps err by about g·h·t/2 in position: its model error against the
 // ballistic reference shrinks with the tick, while the ballistic double run sits on the reference.
 TEST(Study, ClassicModelErrorShrinksWithTheTickAndBallisticDoubleIsOnTheReference) {
