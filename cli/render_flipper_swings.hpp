@@ -1,8 +1,8 @@
 #pragma once
 // A flipper's swing over a run, rebuilt from a log's decisions: the log records each action on
 // the flipper, each flipper stop and each block, and the swing between them is the fixed motion
-// of physics.md §2. Each anchor says: after this event, the progress along the forward swing is
-// s0 at t0 and moves at `direction` (+1 forward, −1 back, 0 still), within [0, 1/12 s].
+// of docs/physics.md §2. Each anchor says: after this event, the progress along the forward
+// swing is s0 at t0 and moves at `direction` (+1 forward, −1 back, 0 still), within [0, 1/12 s].
 #include <cstdint>
 #include <vector>
 

@@ -5,7 +5,7 @@
 // the exact text of a double, with which both pages report what they drew to their tests.
 "use strict";
 const BoardView = (function () {
-  const SWING_TIME = 1 / 12;  // physics.md §2: a flipper swings a quarter turn in 1/12 s
+  const SWING_TIME = 1 / 12;  // docs/physics.md §2: a flipper swings a quarter turn in 1/12 s
   const QUARTER = Math.PI / 2;
   const BALL_COLOURS = ["#f4f4f4", "#ffe066", "#7fd1ff", "#ff9ecb", "#a5ffb0", "#ffb27a"];
   const GIZMO_FILL = { square: "#d9534f", triangle: "#3e7cd6", circle: "#3fae5a", absorber: "#8e4aa3", booster: "#e0b830",

@@ -1,5 +1,5 @@
 // The board as the seed lays it out: the event loop, pairs, triggers, absorbers, flippers,
-// the reference numbers of physics.md §8 in both models, and long runs that must not stall.
+// the reference numbers of docs/physics.md §8 in both models, and long runs that must not stall.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,7 +36,7 @@ double speedBefore(const Recorder<double>::Executed& e, GizmoId ball) {
   return -1;
 }
 
-// --- reference numbers (physics.md §8) ------------------------------------------------------------
+// --- reference numbers (docs/physics.md §8) -------------------------------------------------------
 
 BoardSpec dropOntoAbsorber() {
   BoardSpec s = emptyBoard(25, 0, 0);
@@ -118,7 +118,7 @@ TEST(ReferenceNumbers, SideWallEverySecondInBothModels) {
 }
 
 // The fixed point of the discrete friction law at step h tends to the continuous terminal speed
-// 31.126729 L/s as h → 0 (physics.md §8).
+// 31.126729 L/s as h → 0 (docs/physics.md §8).
 TEST(ReferenceNumbers, TerminalSpeedOfTheFrictionLaw) {
   for (double h : {0.01, 0.001, 0.0001}) {
     PhysicsParams<double> p;
@@ -482,7 +482,7 @@ TEST(LongRuns, BallBalancedOnTopOfACircleComesToRest) {
   s.gizmos.push_back(gizmoAt(GizmoType::Circle, "C", 10, 10));
   s.balls.push_back(ballAt("B", 10.5, 9.75));  // exactly on the top of the circle (10.5, 10.5)
   // Ballistic only: the classic model's ball gains g·maxTick between ticks and bounces off the
-  // top at that speed, never slowly (the seed's method; physics.md §6).
+  // top at that speed, never slowly (the seed's method; docs/physics.md §6).
   auto board = build(s, MotionModel::Ballistic);
   Recorder<double> rec;
   board->setObserver(&rec);
@@ -510,7 +510,7 @@ TEST(Reflection, GrazingACornerIsNoCollisionInEitherModel) {
   }
 }
 
-// --- the seed's procedure ----------------------------------------------------------------------------
+// --- the seed's procedure (docs/physics.md, "The event loop") ----------------------------------------
 
 TEST(EventLoop, LongTicksAreSplitAtTheMaximumTickLength) {
   auto board = build(emptyBoard());

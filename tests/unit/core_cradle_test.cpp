@@ -75,7 +75,7 @@ std::unique_ptr<GameBoard<double>> ballBesideCircles(bool withC1, Recorder<doubl
 // long as the run lasts. It comes to rest instead, touching one circle and within the minimum
 // bounce's rise, restSpeed²/(2g) = 2e-6 L, of the other: within rise / sin(83.6°) of W, the angle
 // between the normals there. Ballistic only: the classic model's step gains up to ½g²dt² per
-// step and throws the ball out of so shallow a V (the seed's method; physics.md §6).
+// step and throws the ball out of so shallow a V (the seed's method; docs/physics.md §6).
 TEST(Cradle, ABallRattlingInTheVOfTwoCirclesComesToRestThere) {
   Recorder<double> rec;
   const auto board = ballBesideCircles(true, rec, 60.0);

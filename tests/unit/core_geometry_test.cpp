@@ -34,7 +34,7 @@ TEST(Shapes, SquareHasFourOutwardEdgesAndFourCorners) {
   EXPECT_TRUE(hasVertex(s, 3, 4) && hasVertex(s, 4, 4) && hasVertex(s, 4, 5) && hasVertex(s, 3, 5));
 }
 
-// physics.md §2: orientation 0 has its right angle at NW, 90 at NE, 180 at SE, 270 at SW.
+// docs/physics.md §2: orientation 0 has its right angle at NW, 90 at NE, 180 at SE, 270 at SW.
 TEST(Shapes, TriangleRightAngleTurnsClockwise) {
   const struct {
     int orientation;
@@ -76,7 +76,7 @@ TEST(Shapes, AbsorberSpansItsRectangle) {
   EXPECT_TRUE(hasVertex(s, 0, 19) && hasVertex(s, 20, 19) && hasVertex(s, 20, 20) && hasVertex(s, 0, 20));
 }
 
-// physics.md §2: pivots and angles of both flippers in all four orientations.
+// docs/physics.md §2: pivots and angles of both flippers in all four orientations.
 TEST(Shapes, FlipperLayoutsInAllOrientations) {
   const struct {
     GizmoType type;
@@ -169,7 +169,7 @@ TEST(TimeOfImpact, SegmentMissesBeyondItsEndsAndFromBehind) {
   EXPECT_FALSE(segmentTimeOfImpact(Trajectory<double>{{7, 2}, {0, 5}, {0, 0}}, 0.25, top, 10.0));
   // Coming from behind (below): the other side's edges handle that.
   EXPECT_FALSE(segmentTimeOfImpact(Trajectory<double>{{5.5, 8}, {0, -5}, {0, 0}}, 0.25, top, 10.0));
-  // Receding while touching: no collision (physics.md §5).
+  // Receding while touching: no collision (docs/physics.md §5).
   EXPECT_FALSE(segmentTimeOfImpact(Trajectory<double>{{5.5, 4.75}, {0, -1}, {0, 0}}, 0.25, top, 10.0));
   // Touching and approaching: now.
   const auto now = segmentTimeOfImpact(Trajectory<double>{{5.5, 4.75}, {0, 1}, {0, 0}}, 0.25, top, 10.0);

@@ -93,7 +93,7 @@ class Box2dBridge final : public b2ContactListener {
       for (std::size_t i = 0; i < ballBodies_.size(); ++i) {
         b2Body* body = bodies_[ballBodies_[i]].body;
         if (!body->IsEnabled()) continue;
-        // The Gizmoball friction law, before Box2D adds gravity (physics.md §4).
+        // The Gizmoball friction law, before Box2D adds gravity (docs/physics.md §4).
         const Vec2<double> v = Ball<double>::frictionApplied(fromBox2d(body->GetLinearVelocity()), dt, shadow_->params());
         body->SetLinearVelocity(toBox2d(v));
         // Box2D scales such a velocity down for good (b2Island::Solve); the margin keeps a ball
@@ -206,7 +206,7 @@ class Box2dBridge final : public b2ContactListener {
 
   // A contact that begins is a hit when the ball approaches the other body there faster than
   // the core's rest speed (a ball sliding along a wall touches it again and again in Box2D
-  // without ever approaching: physics.md §5 gives no collision for that), and the first of its
+  // without ever approaching: docs/physics.md §5 gives no collision for that), and the first of its
   // pair in this step (a flipper's three fixtures, or two wall edges, met at once are one hit).
   // An absorber's sensor counts its touching contacts instead: the ball enters and leaves.
   void note(b2Contact* contact, int change) {

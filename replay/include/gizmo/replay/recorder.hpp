@@ -1,7 +1,7 @@
 #pragma once
-// The observer that turns a run into chunks (architecture.md, seam 2): every report of the
-// board becomes a record and enters the chunk's digest; at the first tick boundary after a chunk
-// is full, the board's state is saved as the next chunk's keyframe.
+// The observer that turns a run into chunks (docs/architecture.md, seam 2): every report of
+// the board becomes a record and enters the chunk's digest; at the first tick boundary after a
+// chunk is full, the board's state is saved as the next chunk's keyframe.
 #include <algorithm>
 #include <cstdint>
 #include <span>

@@ -62,7 +62,7 @@ std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams
     Ball<Real>* raw = ball.get();
     board->add(std::move(ball));
     raw->setState(Real(0), raw->positionAt(Real(0)), raw->velocityAt(Real(0)), params);
-    // A ball at rest wholly inside an absorber counts as captured at time 0 (physics.md §2).
+    // A ball at rest wholly inside an absorber counts as captured at time 0 (docs/physics.md §2).
     if (b.vx != 0 || b.vy != 0) continue;
     for (Absorber<Real>* a : absorbers) {
       const GizmoSpec s = a->spec();

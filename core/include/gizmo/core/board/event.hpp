@@ -9,7 +9,7 @@ namespace gizmo {
 using GizmoId = std::int32_t;
 inline constexpr GizmoId kNoGizmo = -1;
 
-// The order of this enum is the tie order for events at the same instant (physics.md §5):
+// The order of this enum is the tie order for events at the same instant (docs/physics.md §5):
 // physical contacts first, then what the models add, input, and the bookkeeping events last.
 enum class EventKind : std::uint8_t {
   Collision,    // seed: a collision between collider (a) and collidee (b) through feature

@@ -335,7 +335,8 @@ void GameBoard<Real>::tickSpan(const Real& start, std::int64_t first, const Real
   }
 }
 
-// Seed, steps 2–4: an end-of-tick event, then the earliest event until that one is reached.
+// The seed's steps 2–4 (docs/physics.md, "The event loop"): an end-of-tick event, then the
+// earliest event until that one is reached.
 template <class Real>
 void GameBoard<Real>::tickUntil(const Real& end) {
   schedule(EventKind::EndOfTick, end, kNoGizmo, kNoGizmo, -1);
@@ -357,8 +358,9 @@ void GameBoard<Real>::tickUntil(const Real& end) {
   if (observer_) observer_->tickBoundary(now_);
 }
 
-// Seed 3a: every gizmo simulated up to the event. Ballistic balls and flippers move along
-// closed forms anchored at their last change, so only the classic model steps anything.
+// The seed's step 3a (docs/physics.md, "The event loop"): every gizmo simulated up to the
+// event. Ballistic balls and flippers move along closed forms anchored at their last change, so
+// only the classic model steps anything.
 template <class Real>
 void GameBoard<Real>::advanceTo(const Real& t) {
   if (!(fromDouble<Real>(detail::kBurstGap) < Real(t - now_))) {
@@ -525,7 +527,8 @@ void GameBoard<Real>::releaseContactsNow(GizmoId g) {
   }
 }
 
-// Seed 3b–3c: remove every event of the gizmos to recompute, then predict their pairs again.
+// The seed's steps 3b–3c (docs/physics.md, "The event loop"): remove every event of the gizmos
+// to recompute, then predict their pairs again.
 template <class Real>
 void GameBoard<Real>::recomputePending() {
   if (recompute_.empty()) return;
@@ -662,9 +665,9 @@ void GameBoard<Real>::gatherCandidates(GizmoId ballId, std::vector<GizmoId>& out
   candidateSet_.drainInto(out);
 }
 
-// Seed: predict one pair. A collision within both sides' horizons becomes a collision event;
-// anything later is found again when either side is next recomputed (the ball's own
-// recalculate event bounds that wait by the maximum tick length).
+// The seed's step 3c: predict one pair. A collision within both sides' horizons becomes a
+// collision event; anything later is found again when either side is next recomputed (the
+// ball's own recalculate event bounds that wait by the maximum tick length).
 template <class Real>
 void GameBoard<Real>::computePair(GizmoId ballId, GizmoId other) {
   const GizmoId collider = colliderOf(ballId, other);

@@ -4,7 +4,8 @@
 
 namespace gizmo {
 
-// Rules that the models apply beyond plain reflection (physics.md §6: each is a recorded decision).
+// Rules that the models apply beyond plain reflection (docs/physics.md §6: each is a recorded
+// decision).
 enum class ModelRule : std::uint8_t {
   FrictionApplied,   // the friction law applied to a ball (ballistic: at a friction tick)
   ContactBegin,      // a slow ball pressed onto a segment starts sliding along it

@@ -1,7 +1,7 @@
 #pragma once
-// The one seam through which the board reports every event-queue decision (architecture.md,
-// seam 2). The replay recorder and the invariant checkers are observers; a board without one
-// skips building the reports altogether.
+// The one seam through which the board reports every event-queue decision
+// (docs/architecture.md, seam 2). The replay recorder and the invariant checkers are observers;
+// a board without one skips building the reports altogether.
 #include <array>
 #include <span>
 

@@ -1,6 +1,6 @@
 #pragma once
 // The numbers a run depends on besides the board: the motion model and the constants of
-// physics.md, each recorded in a replay log's header.
+// docs/physics.md, each recorded in a replay log's header.
 #include <cstdint>
 #include <string_view>
 

@@ -38,7 +38,7 @@ void addCapsule(Shape<Real>& shape, const Vec2<Real>& p, const Vec2<Real>& q, co
   shape.circles.push_back(CircleFeature<Real>{q, radius});
 }
 
-// Flipper geometry of physics.md §2, in whole quarter turns so that it is exact.
+// Flipper geometry of docs/physics.md §2, in whole quarter turns so that it is exact.
 struct FlipperLayout {
   Vec2<double> pivot;  // pivot centre, relative to the box's upper-left corner
   int restQuarter;     // rest angle θ = restQuarter · π/2 (θ from +x toward +y)

@@ -1,9 +1,9 @@
 #pragma once
 // Times of impact of a ball against each kind of feature, as times τ from the present in
 // [0, limit]. Every function reports the first *entry* only: the gap between ball and feature
-// going from positive to zero while closing (physics.md §5: a ball that touches or overlaps a
-// feature while receding gets no collision). Roots come from the certified first-root
-// searches of math/roots.hpp, which never step over a root.
+// going from positive to zero while closing (docs/physics.md §5: a ball that touches or
+// overlaps a feature while receding gets no collision). Roots come from the certified
+// first-root searches of math/roots.hpp, which never step over a root.
 #include <array>
 #include <optional>
 
@@ -44,9 +44,9 @@ Real positionResolution(const Vec2<Real>& p) {
   return Real(4) * epsilonOf<Real>() * Real(absOf(p.x) + absOf(p.y));
 }
 
-// A graze (physics.md, "Grazes"): a path that touches a round feature with a closing speed of
-// at most κ times its speed, while curving away from it (|v|² + d·a > 0: the gap's second
-// derivative is positive), passes it. The dip of the gap below zero is then at most
+// A graze (docs/physics.md, "Grazes"): a path that touches a round feature with a closing
+// speed of at most κ times its speed, while curving away from it (|v|² + d·a > 0: the gap's
+// second derivative is positive), passes it. The dip of the gap below zero is then at most
 // (r + R) κ² / 2, and at an exact tangency whether it dips at all is decided by rounding:
 // without the rule two runs that differ by an ulp (the two motion models) would part there.
 // κ² = min(2^20 ε, 2^-20): a thousand times above the rounding of a near-double root

@@ -1,6 +1,6 @@
 #pragma once
-// The absorber (physics.md §2): a rectangle that captures balls instead of reflecting them,
-// holds them at its lower-right corner, and fires the first one it captured when triggered.
+// The absorber (docs/physics.md §2): a rectangle that captures balls instead of reflecting
+// them, holds them at its lower-right corner, and fires the first one it captured when triggered.
 #include <algorithm>
 #include <deque>
 

@@ -106,7 +106,7 @@ class AbstractGizmo {
   // Simulates the gizmo for dt; true when its velocity changed (seed: schedule a recomputation).
   virtual bool tick(const Real& /*dt*/, BoardAccess<Real>& /*board*/) { return false; }
 
-  // Whether hits on this gizmo produce a trigger (physics.md §3: all but the ball).
+  // Whether hits on this gizmo produce a trigger (docs/physics.md §3: all but the ball).
   virtual bool hasTrigger() const { return true; }
   // Seed: the action performed when a trigger connected to this gizmo fires.
   virtual void fireTrigger(BoardAccess<Real>& /*board*/) {}

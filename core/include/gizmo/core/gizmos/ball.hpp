@@ -113,7 +113,7 @@ class Ball final : public AbstractGizmo<Real> {
     return Contact<Real>{now + *tau, 0, EventKind::Collision};
   }
 
-  // Equal masses, elastic: the normal components are exchanged (physics.md §5).
+  // Equal masses, elastic: the normal components are exchanged (docs/physics.md §5).
   void collide(AbstractGizmo<Real>& other, const Contact<Real>&, BoardAccess<Real>& board) override {
     Ball* b = other.asBall();
     if (!b) return;
@@ -344,7 +344,7 @@ class Ball final : public AbstractGizmo<Real> {
   }
 
   // --- the classic model's step ----------------------------------------------------------------
-  // Seed: simulate for dt. p += v dt, then friction and gravity update v (physics.md §6).
+  // Seed: simulate for dt. p += v dt, then friction and gravity update v (docs/physics.md §6).
   bool tick(const Real& dt, BoardAccess<Real>& board) override {
     if (captured_ || board.params().model != MotionModel::Classic) return false;
     const PhysicsParams<Real>& params = board.params();

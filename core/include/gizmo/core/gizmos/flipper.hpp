@@ -1,5 +1,5 @@
 #pragma once
-// Left and right flippers (physics.md §2): a capsule that swings a quarter turn about its
+// Left and right flippers (docs/physics.md §2): a capsule that swings a quarter turn about its
 // pivot in exactly 1/12 s when triggered, reverses at once when triggered mid-swing, and
 // adds its surface speed to the balls it strikes.
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// The four walls of the board, one gizmo named OuterWalls for triggering (physics.md §1).
+// The four walls of the board, one gizmo named OuterWalls for triggering (docs/physics.md §1).
 #include "gizmo/core/gizmos/polygonal_gizmo.hpp"
 
 namespace gizmo {

@@ -1,6 +1,6 @@
 #pragma once
-// A run as data (architecture.md, seam 4): a board, a motion model, a scalar, timed key input,
-// and how long to simulate. The same function serves the command line, the tests and the
+// A run as data (docs/architecture.md, seam 4): a board, a motion model, a scalar, timed key
+// input, and how long to simulate. The same function serves the command line, the tests and the
 // benchmarks.
 #include <array>
 #include <cmath>

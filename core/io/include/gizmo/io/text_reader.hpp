@@ -1,5 +1,5 @@
 #pragma once
-// The text board format (board-formats.md §2; docs/board-files.md says what is accepted).
+// The text board format (docs/board-files.md §2, "The text format", says what is accepted).
 #include <string>
 #include <string_view>
 

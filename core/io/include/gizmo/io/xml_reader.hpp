@@ -1,5 +1,5 @@
 #pragma once
-// The XML board format of MIT 6.170 (board-formats.md §1), through pugixml.
+// The XML board format of MIT 6.170 (docs/board-files.md §3, "The XML format"), through pugixml.
 #include <string>
 #include <string_view>
 
