@@ -217,6 +217,28 @@ TEST(TimeOfImpact, ABallComingOverAnEdgesEndOntoItsLineIsHitThere) {
   EXPECT_FALSE(segmentTimeOfImpact(path(0, -1e-9), 0.25, top, 1.0));
 }
 
+// A free ball that comes over an edge's end along its line with a normal speed at rounding's
+// level, either way, is pressed into the line by gravity and dips below it at once: it is hit as
+// it comes over the end. A ball sliding on a collinear neighbour has no acceleration across the
+// line (its surface takes gravity's part), and meets the edge when its contact ends, as before
+// (campaign seed 27182818, case 174: a ball sent back along a flipper's top by the wall at its
+// pivot end, 8·10⁻¹⁷ L beyond the side's end at 3.5·10⁻¹⁵ L/s across, sank into the side).
+TEST(TimeOfImpact, ABallPressedOntoAnEdgesLineAsItComesOverTheEndIsHitThere) {
+  const SegmentFeature<double> top = makeSegment(Vec2<double>(0.25, 18), Vec2<double>(1.75, 18));  // normal (0,−1)
+  auto path = [](double vy, double ay) {
+    return Trajectory<double>{{0.24999999999999992, 17.75}, {55.134951070500868, vy}, {0, ay}};
+  };
+  for (const double vy : {3.4694469519536142e-15, 0.0, -3.4694469519536142e-15}) {
+    const auto tau = segmentTimeOfImpact(path(vy, 1000), 0.25, top, 0.05);
+    ASSERT_TRUE(tau) << "vy " << vy;
+    EXPECT_LT(*tau, 1e-16) << "vy " << vy;
+  }
+  // No acceleration across the line (sliding on a neighbour, or the classic model): not here.
+  EXPECT_FALSE(segmentTimeOfImpact(path(3.4694469519536142e-15, 0), 0.25, top, 0.05));
+  // Pulled away from the line: nothing to meet.
+  EXPECT_FALSE(segmentTimeOfImpact(path(-3.4694469519536142e-15, -1000), 0.25, top, 0.05));
+}
+
 // Two balls 1e-8 L into each other (deeper than a graze leaves them) whose closing is a rounding
 // (d·v = −1.8e-15, an ulp of 10, against |d||v| = 0.5) are not hit now: the response, computing
 // the closing with its own roundings, may find them opening and change nothing, and the same hit
