@@ -494,5 +494,23 @@ TEST(FuzzRegressions, ASpinnerToggledByEveryHitNearItDoesNotStall) {
   expectModelsAgree(run);
 }
 
+// Campaign seed 27182818, case 174, shrunk: B44 strikes G3, whose trigger swings G19 into B52,
+// which rests on G0's top. B52 slides left along it at 55 L/s; its contact ends at the side's
+// pivot end, and the wall just there sends it back 3.5·10⁻¹⁸ s later, 8·10⁻¹⁷ L beyond the side's
+// end and 3.5·10⁻¹⁵ L/s across its line. Neither the pivot's circle (the ball passes over it)
+// nor the side (over it the gap was already falling) found an entry, and gravity 1000 sank the
+// ball into the side (1.9·10⁻⁸ L in 6 μs in the unshrunk case, 2.7·10⁻⁴ L here).
+TEST(FuzzRegressions, ABallSentBackAlongAFlippersTopByTheWallAtItsEndLandsOnIt) {
+  BoardSpec board = test::emptyBoard(1000, 0, 0);
+  board.balls.push_back(ballAt("B42", 13.75, 6.75));
+  board.balls.push_back(ballAt("B44", 11.5, 5.75, 2492.8194954369837, 1659.3307684350473));
+  board.balls.push_back(ballAt("B52", 1.25, 17.75));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G0", 0, 18, 270, 2, 2));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G3", 18, 14, 180, 2, 2));
+  board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G19", 0, 16, 0, 2, 2));
+  board.connections.push_back(ConnectSpec{"G3", "G19", {}});
+  expectInvariantsInBothModels(ballisticRun(board, 0.05, 0.04808931757680732));
+}
+
 }  // namespace
 }  // namespace gizmo::verify::fuzz
