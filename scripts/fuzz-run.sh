@@ -42,10 +42,7 @@ else
   scripts/setup.sh
   if ! command -v clang++ >/dev/null; then
     echo "fuzz-run: installing clang (libFuzzer comes with it)" >&2
-    run_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
-    export DEBIAN_FRONTEND=noninteractive
-    run_root apt-get update -qq
-    run_root apt-get install -y -qq --no-install-recommends clang >&2
+    scripts/apt-install.sh clang
   fi
 fi
 

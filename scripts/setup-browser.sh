@@ -15,7 +15,4 @@ $have_browser || packages+=(chromium)
 [ ${#packages[@]} -eq 0 ] && exit 0
 
 echo "setup-browser: installing ${packages[*]}" >&2
-run_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
-export DEBIAN_FRONTEND=noninteractive
-run_root apt-get update -qq
-run_root apt-get install -y -qq --no-install-recommends "${packages[@]}" >&2
+exec "$(dirname "$0")/apt-install.sh" "${packages[@]}"

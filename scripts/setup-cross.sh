@@ -53,5 +53,4 @@ for arch in "${archs[@]}"; do
   dpkg --print-foreign-architectures | grep -qx "$arch" || run_root dpkg --add-architecture "$arch"
 done
 echo "setup-cross: installing ${missing[*]}" >&2
-run_root apt-get update -qq
-run_root apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+exec "$(dirname "$0")/apt-install.sh" "${missing[@]}"

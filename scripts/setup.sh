@@ -30,7 +30,4 @@ done
 [ ${#missing[@]} -eq 0 ] && exit 0
 
 echo "setup: installing ${missing[*]}" >&2
-run_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
-export DEBIAN_FRONTEND=noninteractive
-run_root apt-get update -qq
-run_root apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+exec "$(dirname "$0")/apt-install.sh" "${missing[@]}"
