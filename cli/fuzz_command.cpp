@@ -1,5 +1,6 @@
 #include "fuzz_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -7,6 +8,7 @@
 
 #include "board_input.hpp"
 #include "gizmo/verify/fuzz/campaign.hpp"
+#include "gizmo/verify/fuzz/expectations.hpp"
 #include "gizmo/verify/fuzz/properties.hpp"
 #include "gizmo/verify/fuzz/run_description.hpp"
 
@@ -51,13 +53,29 @@ void printFailures(const fz::CampaignResult& r) {
   }
 }
 
-// --check: the properties on one run read from files.
+// --check: the properties on one run read from files, then the user's expectations about it (a
+// run as long as the longest time they allow). A malformed expectation file is refused before
+// anything is checked.
 int checkOne(const FuzzOptions& o, const std::vector<const fz::Property*>& properties) {
   CheckedRun run;
   int code = kExitOk;
   RunOptions options = o.run;
   options.board = o.check;
   if (!checkRun(options, "fuzz", run, code)) return code;
+  std::vector<fz::Expectation> expectations;
+  try {
+    if (!o.expect.empty()) expectations = fz::readExpectationFile(o.expect);
+  } catch (const fz::ExpectationError& e) {
+    std::cerr << "gizmo fuzz: " << e.what() << '\n';
+    return kExitBadInput;
+  }
+  std::vector<fz::ExpectationFailure> broken;
+  try {
+    if (!expectations.empty()) broken = fz::checkExpectations(run.request, expectations);
+  } catch (const fz::ExpectationError& e) {
+    std::cerr << "gizmo fuzz: " << e.what() << '\n';
+    return kExitBadInput;
+  }
   int result = kExitOk;
   const std::vector<fz::PropertyResult> results = fz::checkProperties(properties, run.request);
   for (std::size_t k = 0; k < properties.size(); ++k) {
@@ -66,6 +84,15 @@ int checkOne(const FuzzOptions& o, const std::vector<const fz::Property*>& prope
     std::cout << p->name << ": " << (r.holds ? "holds" : "FAILS") << '\n';
     if (!r.holds) {
       std::cout << "  " << r.message << '\n';
+      result = kExitCheckFailed;
+    }
+  }
+  for (std::size_t k = 0; k < expectations.size(); ++k) {
+    const auto failed = std::find_if(broken.begin(), broken.end(),
+                                     [k](const fz::ExpectationFailure& f) { return f.expectation == k; });
+    std::cout << "expect " << expectations[k].source << ": " << (failed == broken.end() ? "holds" : "FAILS") << '\n';
+    if (failed != broken.end()) {
+      std::cout << "  " << failed->message << '\n';
       result = kExitCheckFailed;
     }
   }

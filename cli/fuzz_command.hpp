@@ -23,6 +23,7 @@ struct FuzzOptions {
   std::vector<std::string> merge;  // --merge DIR...: merge these results folders
   std::string check;        // --check BOARD: check one run instead of generating
   RunOptions run;           // --keys, --model, --max-tick, --time for --check
+  std::string expect;       // --expect FILE: the user's expectations, checked with --check
   bool boardTimeGiven = false;  // --time was given (it belongs to --check)
 };
 int fuzzCommand(const FuzzOptions& options);

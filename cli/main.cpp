@@ -145,11 +145,13 @@ int main(int argc, char** argv) {
   CLI::Option* fuzzTime = fuzzCmd->add_option("--time", fuzz.run.time, "With --check: seconds of board time to simulate")
                               ->capture_default_str();
   CLI::Option* fuzzKeys = fuzzCmd->add_option("--keys", fuzz.run.keys, "With --check: key script");
+  CLI::Option* fuzzExpect = fuzzCmd->add_option(
+      "--expect", fuzz.expect, "With --check: the user's expectations about the board (docs/fuzzing.md, \"Expectations\")");
   addStrictOption(*fuzzCmd, fuzz.run.strict);
   CLI::Option* fuzzModel = fuzzCmd->add_option("--model", fuzz.run.model, "With --check: ballistic or classic")->capture_default_str();
   CLI::Option* fuzzMaxTick =
       fuzzCmd->add_option("--max-tick", fuzz.run.maxTick, "With --check: maximum tick length, seconds")->capture_default_str();
-  for (CLI::Option* checkOnly : {fuzzKeys, fuzzModel, fuzzMaxTick}) checkOnly->needs(fuzzCheck);
+  for (CLI::Option* checkOnly : {fuzzKeys, fuzzModel, fuzzMaxTick, fuzzExpect}) checkOnly->needs(fuzzCheck);
   fuzzMerge->excludes(fuzzCheck);
   for (const char* campaignOnly :
        {"--count", "--seed", "--jobs", "--shard", "--out", "--budget", "--shrink-budget", "--log-cases"}) {
