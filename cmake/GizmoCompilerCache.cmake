@@ -14,7 +14,11 @@
 #   precompiled header (its manual, "Precompiled headers"); nothing here uses __DATE__ or __TIME__,
 #   and the precompiled headers hold third-party headers only. include_file_mtime and ctime: a
 #   header written by the build just before a source that includes it (the unity sources) is
-#   hashed by its content like any other.
+#   hashed by its content like any other;
+# - the inode cache: ccache hashes every file a source includes, and the precompiled header that
+#   each source of a target reads is 240 MB; remembered by inode, size and times, it is hashed
+#   once per build instead of once per source (a test source's compilation through an empty
+#   cache: 1.6 s of CPU over the compiler's own 9.9 s without it, 0.3 s with it).
 option(GIZMO_CCACHE "Compile through ccache when it is installed" ON)
 if(GIZMO_CCACHE AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
   find_program(GIZMO_CCACHE_PROGRAM ccache)
@@ -23,6 +27,7 @@ if(GIZMO_CCACHE AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
         ${CMAKE_COMMAND} -E env
         CCACHE_BASEDIR=${CMAKE_SOURCE_DIR}
         CCACHE_NOHASHDIR=1
+        CCACHE_INODECACHE=1
         CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime
         ${GIZMO_CCACHE_PROGRAM})
   endif()
