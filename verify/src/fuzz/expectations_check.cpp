@@ -76,7 +76,7 @@ class ExpectationChecker final : public BoardObserver<double> {
   ExpectationChecker(const GameBoard<double>& board, const std::vector<Expectation>& expectations, double end)
       : board_(board), expectations_(expectations), end_(end), decided_(expectations.size(), false),
         hits_(expectations.size(), 0) {
-    for (const Expectation& e : expectations) resolve(e);
+    for (const Expectation& e : expectations) gizmos_.push_back(resolve(e));
     for (GizmoId id : board.ballIds()) watch(id, 0);
   }
 
@@ -104,7 +104,9 @@ class ExpectationChecker final : public BoardObserver<double> {
   std::vector<ExpectationFailure> failures;
 
  private:
-  void resolve(const Expectation& e) {
+  // The gizmo an expectation names (the absorber of `reaches`, the gizmo of `hit`), looked up
+  // once; kNoGizmo for the other kinds.
+  GizmoId resolve(const Expectation& e) {
     auto named = [&](const std::string& name, const char* what) {
       const std::optional<GizmoId> id = board_.find(name);
       if (!id) throw ExpectationError(e.source + ": the board has no " + what + " named '" + name + "'");
@@ -112,9 +114,13 @@ class ExpectationChecker final : public BoardObserver<double> {
     };
     if (!e.ball.empty() && !board_.gizmo(named(e.ball, "ball")).asBall())
       throw ExpectationError(e.source + ": '" + e.ball + "' is not a ball");
-    if (e.kind == ExpectationKind::Reaches && board_.gizmo(named(e.gizmo, "absorber")).kind() != GizmoKind::Absorber)
-      throw ExpectationError(e.source + ": '" + e.gizmo + "' is not an absorber");
-    if (e.kind == ExpectationKind::Hit) named(e.gizmo, "gizmo");
+    if (e.kind == ExpectationKind::Reaches) {
+      const GizmoId absorber = named(e.gizmo, "absorber");
+      if (board_.gizmo(absorber).kind() != GizmoKind::Absorber)
+        throw ExpectationError(e.source + ": '" + e.gizmo + "' is not an absorber");
+      return absorber;
+    }
+    return e.kind == ExpectationKind::Hit ? named(e.gizmo, "gizmo") : kNoGizmo;
   }
 
   void watch(GizmoId id, double since) {
@@ -143,7 +149,7 @@ class ExpectationChecker final : public BoardObserver<double> {
     for (std::size_t i = 0; i < expectations_.size(); ++i) {
       const Expectation& x = expectations_[i];
       if (x.kind != ExpectationKind::Hit || !ballInvolved || e.time > x.seconds) continue;
-      if (board_.gizmo(e.a).name() == x.gizmo || board_.gizmo(e.b).name() == x.gizmo) ++hits_[i];
+      if (e.a == gizmos_[i] || e.b == gizmos_[i]) ++hits_[i];
     }
   }
 
@@ -224,12 +230,11 @@ class ExpectationChecker final : public BoardObserver<double> {
       return;
     }
     if (e.kind != ExpectationKind::Reaches) return;
-    const std::optional<GizmoId> absorber = board_.find(e.gizmo);
     for (const auto& entry : balls_) {
       const BallWatch& b = entry.second;
       const double deadline = b.inPlaySince + e.seconds;
       if (!about(e, b) || !passed(deadline)) continue;
-      const auto it = b.capturedBy.find(*absorber);
+      const auto it = b.capturedBy.find(gizmos_[i]);
       if (it != b.capturedBy.end() && it->second <= deadline) continue;
       // Each moment decides the deadlines since the last one, before the paths move on: the
       // path of the last moment holds the ball's place at the deadline.
@@ -246,6 +251,7 @@ class ExpectationChecker final : public BoardObserver<double> {
   double last_ = 0;
   std::vector<bool> decided_;
   std::vector<long> hits_;
+  std::vector<GizmoId> gizmos_;  // resolve()'s answer for each expectation
   std::map<GizmoId, BallWatch> balls_;
 };
 
