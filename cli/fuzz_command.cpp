@@ -6,11 +6,14 @@
 #include <iostream>
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
 #include "board_input.hpp"
 #include "gizmo/verify/fuzz/campaign.hpp"
 #include "gizmo/verify/fuzz/expectations.hpp"
 #include "gizmo/verify/fuzz/properties.hpp"
 #include "gizmo/verify/fuzz/run_description.hpp"
+#include "log_view.hpp"
 
 namespace gizmo::cli {
 namespace {
@@ -49,14 +52,47 @@ void printFailures(const fz::CampaignResult& r) {
     std::cout << "FAIL " << c.property << " case " << c.index << " (seed " << c.seed << ", size " << c.size << ")";
     if (!c.folder.empty()) std::cout << ": " << c.folder;
     std::cout << '\n';
+    if (!c.departure.empty()) std::cout << "  departure from the run given: " << c.departure << '\n';
     if (!c.message.empty()) std::cout << "  " << c.message << '\n';
   }
+}
+
+nlohmann::ordered_json campaignJson(const fz::CampaignResult& r) {
+  nlohmann::ordered_json j;
+  j["cases"] = r.cases;
+  j["seed"] = r.seed;
+  j["count"] = r.count;
+  j["checked"] = fz::casesChecked(r);
+  j["properties"] = r.properties;
+  j["checks"] = r.outcomes.size();
+  j["failures"] = fz::failureCount(r);
+  j["complete"] = r.complete;
+  j["summary"] = fz::summaryLine(r);
+  const std::string line = fz::summaryLine(r), key = "digest ";
+  const std::size_t at = line.find(key);
+  j["digest"] = at == std::string::npos ? "" : line.substr(at + key.size(), 16);
+  nlohmann::ordered_json failed = nlohmann::ordered_json::array();
+  for (const fz::CaseOutcome& c : r.outcomes) {
+    if (c.holds) continue;
+    nlohmann::ordered_json f;
+    f["property"] = c.property;
+    f["case"] = c.index;
+    f["message"] = c.message;
+    if (!c.departure.empty()) f["departure"] = c.departure;
+    f["shrink_steps"] = c.shrinkSteps;
+    if (!c.folder.empty()) f["folder"] = c.folder;
+    failed.push_back(std::move(f));
+  }
+  j["failed"] = std::move(failed);
+  return j;
 }
 
 // --check: the properties on one run read from files, then the user's expectations about it (a
 // run as long as the longest time they allow). A malformed expectation file is refused before
 // anything is checked.
-int checkOne(const FuzzOptions& o, const std::vector<const fz::Property*>& properties) {
+int checkOne(const FuzzOptions& o, std::vector<const fz::Property*> properties) {
+  // `--property expectations` (a failure folder's command) checks the expectations alone.
+  std::erase_if(properties, [](const fz::Property* p) { return p == nullptr; });
   CheckedRun run;
   int code = kExitOk;
   RunOptions options = o.run;
@@ -119,24 +155,10 @@ int mergeResults(const FuzzOptions& o) {
   return fz::failureCount(merged) == 0 ? kExitOk : kExitCheckFailed;
 }
 
-}  // namespace
-
-std::string fuzzPropertyList() { return fz::propertyNames(); }
-
-int fuzzCommand(const FuzzOptions& o) {
-  if (!o.merge.empty()) return mergeResults(o);
-  std::vector<const fz::Property*> properties;
-  if (!chooseProperties(o.property, properties)) return kExitBadInput;
-  if (!o.check.empty()) return checkOne(o, properties);
-  if (o.boardTimeGiven) {
-    // Before --budget had its name, a campaign's --time was seconds of wall time: say so rather
-    // than run a campaign that ignores it.
-    std::cerr << "gizmo fuzz: --time is seconds of board time, for --check; a campaign's wall-time limit is --budget\n";
-    return kExitBadInput;
-  }
-
-  fz::CampaignOptions c;
-  c.properties = properties;
+// Runs a campaign (generated boards, or variations when c.source is set) with the command's
+// options, writes its folder, prints its summary, failures or JSON. `checkArguments` goes on the
+// end of each failure's command (the expectation file a failure of `expectations` needs).
+int runCampaignAndReport(const FuzzOptions& o, fz::CampaignOptions& c, const std::string& checkArguments) {
   c.count = o.count;
   c.seed = o.seed;
   c.jobs = o.jobs;
@@ -182,22 +204,167 @@ int fuzzCommand(const FuzzOptions& o) {
                 << (failed == 0 ? std::string("every property holds") : std::to_string(failed) + " failed") << '\n';
     };
   }
-  std::cerr << "gizmo fuzz: seed " << o.seed << ", " << o.count << " cases"
-            << (o.shard.empty() ? std::string() : ", shard " + o.shard) << ", " << o.jobs << " jobs, properties "
-            << o.property << '\n';
+  std::cerr << "gizmo fuzz: " << (o.board.empty() ? std::string() : "variations of " + o.board + ", ") << "seed "
+            << o.seed << ", " << o.count << " cases" << (o.shard.empty() ? std::string() : ", shard " + o.shard) << ", "
+            << o.jobs << " jobs, properties " << o.property << (o.expect.empty() ? "" : " and expectations") << '\n';
   fz::CampaignResult result = fz::runCampaign(c);
   if (tty) std::cerr << '\n';
   if (!o.out.empty()) {
     try {
-      fz::writeCampaign(result, o.out, "gizmo");
+      fz::writeCampaign(result, o.out, "gizmo", checkArguments);
     } catch (const fz::CampaignError& e) {
       std::cerr << "gizmo fuzz: " << e.what() << '\n';
       return kExitBadInput;
     }
   }
-  std::cout << "fuzz: " << fz::summaryLine(result) << '\n';
-  printFailures(result);
+  if (o.json) {
+    std::cout << campaignJson(result).dump(2) << '\n';
+  } else {
+    std::cout << "fuzz: " << fz::summaryLine(result) << '\n';
+    printFailures(result);
+  }
   return fz::failureCount(result) == 0 ? kExitOk : kExitCheckFailed;
+}
+
+// The run that `gizmo fuzz BOARD` varies: a board file read as `gizmo run` reads it (warnings
+// included, --strict refusing them), or a replay log's board, model, tick, duration and key input;
+// --keys, --model, --max-tick and --time given on the command line take their place.
+bool baseRun(const FuzzOptions& o, RunRequest& base, int& code) {
+  if (!isLogFile(o.board)) {
+    CheckedRun run;
+    RunOptions options = o.run;
+    options.board = o.board;
+    if (!checkRun(options, "fuzz", run, code)) return false;
+    base = run.request;
+    return true;
+  }
+  std::optional<replay::OpenedLog> log = openLogFor("fuzz", o.board, code);
+  if (!log) return false;
+  if (o.run.strict && !log->header.boardWarnings.empty()) {
+    std::cerr << "gizmo fuzz: " << o.board << ": --strict refuses a run of a board read leniently\n";
+    code = kExitBadInput;
+    return false;
+  }
+  base = log->request;
+  try {
+    if (o.keysGiven) base.keys = loadKeys(o.run.keys);
+  } catch (const std::exception& e) {
+    std::cerr << "gizmo fuzz: " << e.what() << '\n';
+    code = kExitBadInput;
+    return false;
+  }
+  if (o.modelGiven) {
+    if (o.run.model != "ballistic" && o.run.model != "classic") {
+      std::cerr << "gizmo fuzz: --model must be ballistic or classic, not '" << o.run.model << "'\n";
+      code = kExitBadInput;
+      return false;
+    }
+    base.model = o.run.model == "classic" ? MotionModel::Classic : MotionModel::Ballistic;
+  }
+  if (o.maxTickGiven) base.maxTick = o.run.maxTick;
+  if (o.boardTimeGiven) base.duration = o.run.time;
+  if (!(base.maxTick > 0) || !(base.duration > 0)) {
+    std::cerr << "gizmo fuzz: --max-tick and --time must be more than 0\n";
+    code = kExitBadInput;
+    return false;
+  }
+  return true;
+}
+
+bool checkVariations(const fz::VariationOptions& v) {
+  const std::pair<const char*, double> ranges[] = {{"--vary-keys", v.keyPressesPer10s}, {"--vary-position", v.position},
+                                                   {"--vary-speed", v.speed},           {"--vary-angle", v.angle},
+                                                   {"--vary-kick", v.kick},             {"--vary-gravity", v.gravity},
+                                                   {"--vary-friction", v.friction}};
+  for (const auto& [flag, value] : ranges)
+    if (!(value >= 0) || !(value <= 1e6)) {
+      std::cerr << "gizmo fuzz: " << flag << " must be a number from 0 (off) up\n";
+      return false;
+    }
+  if (v.speed >= 100 || v.friction > 100 || v.gravity > 100 || v.angle > 180) {
+    std::cerr << "gizmo fuzz: --vary-speed must be under 100 (%), --vary-gravity and --vary-friction at most 100 (%), "
+                 "--vary-angle at most 180 (degrees)\n";
+    return false;
+  }
+  return true;
+}
+
+int boardCampaign(const FuzzOptions& o, std::vector<const fz::Property*> properties,
+                  const std::vector<fz::Expectation>& expectations) {
+  RunRequest base;
+  int code = kExitOk;
+  if (!baseRun(o, base, code)) return code;
+  if (!checkVariations(o.vary)) return kExitBadInput;
+  fz::VariationOptions vary = o.vary;
+  std::string checkArguments;
+  std::optional<fz::Property> expected;
+  if (!expectations.empty()) {
+    // Every case runs at least as long as the expectations need, and shrinking cuts none shorter.
+    const double horizon = fz::expectationHorizon(expectations);
+    base.duration = std::max(base.duration, horizon);
+    vary.shortestRun = std::max(vary.shortestRun, horizon);
+    try {
+      fz::checkExpectationNames(base, expectations);
+    } catch (const fz::ExpectationError& e) {
+      std::cerr << "gizmo fuzz: " << e.what() << '\n';
+      return kExitBadInput;
+    }
+    expected = fz::expectationsProperty(expectations);
+    properties.push_back(&*expected);
+    checkArguments = " --expect " + o.expect;
+  }
+  if (properties.empty()) {
+    std::cerr << "gizmo fuzz: --property expectations needs --expect FILE\n";
+    return kExitBadInput;
+  }
+  const fz::VariationSource source(base, vary);
+  fz::CampaignOptions c;
+  c.properties = properties;
+  c.source = &source;
+  return runCampaignAndReport(o, c, checkArguments);
+}
+
+}  // namespace
+
+std::string fuzzPropertyList() { return fz::propertyNames() + ", " + std::string(fz::kExpectationsPropertyName); }
+
+int fuzzCommand(const FuzzOptions& o) {
+  if (!o.merge.empty()) return mergeResults(o);
+  std::vector<const fz::Property*> properties;
+  const bool onlyExpectations = o.property == fz::kExpectationsPropertyName;
+  if (onlyExpectations && o.expect.empty()) {
+    std::cerr << "gizmo fuzz: --property expectations needs --expect FILE\n";
+    return kExitBadInput;
+  }
+  if (!onlyExpectations && !chooseProperties(o.property, properties)) return kExitBadInput;
+  if (!o.check.empty() && !o.board.empty()) {
+    std::cerr << "gizmo fuzz: give a BOARD to vary or --check one run, not both\n";
+    return kExitBadInput;
+  }
+  if (!o.check.empty()) return checkOne(o, properties);
+  std::vector<fz::Expectation> expectations;
+  try {
+    if (!o.expect.empty()) expectations = fz::readExpectationFile(o.expect);
+  } catch (const fz::ExpectationError& e) {
+    std::cerr << "gizmo fuzz: " << e.what() << '\n';
+    return kExitBadInput;
+  }
+  if (!o.board.empty()) return boardCampaign(o, properties, expectations);
+  if (o.boardTimeGiven) {
+    // Before --budget had its name, a campaign's --time was seconds of wall time: say so rather
+    // than run a campaign that ignores it.
+    std::cerr << "gizmo fuzz: --time is seconds of board time, for --check or a BOARD; a campaign's wall-time limit is "
+                 "--budget\n";
+    return kExitBadInput;
+  }
+  if (o.keysGiven || o.modelGiven || o.maxTickGiven || !o.expect.empty()) {
+    std::cerr << "gizmo fuzz: --keys, --model, --max-tick and --expect describe a run: give --check BOARD or a BOARD "
+                 "to vary\n";
+    return kExitBadInput;
+  }
+  fz::CampaignOptions c;
+  c.properties = properties;
+  return runCampaignAndReport(o, c, "");
 }
 
 }  // namespace gizmo::cli

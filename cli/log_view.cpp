@@ -1,10 +1,13 @@
 #include "log_view.hpp"
 
 #include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <string_view>
 
 #include "board_input.hpp"
 #include "gizmo/replay/format_error.hpp"
+#include "gizmo/replay/log_format.hpp"
 
 namespace gizmo::cli {
 namespace {
@@ -163,6 +166,12 @@ bool isKindName(std::string_view kind) {
   for (int r = 0; r <= int(kLastModelRule); ++r)
     if (modelRuleName(ModelRule(r)) == kind) return true;
   return false;
+}
+
+bool isLogFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[replay::kMagic.size()] = {};
+  return in.read(magic, sizeof magic) && std::string_view(magic, sizeof magic) == replay::kMagic;
 }
 
 std::optional<replay::OpenedLog> openLogFor(const std::string& command, const std::string& path, int& exitCode) {

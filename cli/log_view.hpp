@@ -22,6 +22,9 @@ bool involves(const replay::DecisionView& d, GizmoId id);
 bool hasKind(const replay::DecisionView& d, std::string_view kind);
 bool isKindName(std::string_view kind);
 
+// A log starts with its magic; anything else is taken for a board file.
+bool isLogFile(const std::string& path);
+
 // Opens a log for a command; on failure prints why and returns nullopt with exitCode set.
 std::optional<replay::OpenedLog> openLogFor(const std::string& command, const std::string& path, int& exitCode);
 

@@ -121,9 +121,13 @@ int main(int argc, char** argv) {
 
   FuzzOptions fuzz;
   CLI::App* fuzzCmd = app.add_subcommand(
-      "fuzz", "Check properties (docs/fuzzing.md) on generated boards; each failure is shrunk to a minimal board and,\n"
-              "with --out, written there with its key script, its log and a command that checks it again (exit 1).\n"
-              "Example: gizmo fuzz --count 200 --jobs 2 --out fuzz-results");
+      "fuzz", "Check properties (docs/fuzzing.md) on generated boards, or on variations of a BOARD or replay log of yours\n"
+              "(its key input, ball launches, gravity, friction, model and tick) with your --expect file; each failure is\n"
+              "shrunk (a generated board to a minimal board, a variation back toward your run) and, with --out, written\n"
+              "there with its key script, its log and a command that checks it again (exit 1).\n"
+              "Examples: gizmo fuzz --count 200 --jobs 2 --out fuzz-results\n"
+              "          gizmo fuzz my-board.txt --expect my-board.expect --count 500 --jobs 2 --out found");
+  fuzzCmd->add_option("board", fuzz.board, "A board file or replay log whose variations to check (none: generated boards)");
   fuzzCmd->add_option("--property", fuzz.property, "all, or one of: " + fuzzPropertyList())
       ->capture_default_str();
   fuzzCmd->add_option("--count", fuzz.count, "Cases in the campaign, numbered from 0")->capture_default_str();
@@ -139,28 +143,58 @@ int main(int argc, char** argv) {
   fuzzCmd->add_flag("--log-cases", fuzz.logCases,
                     "Print a line to stderr as each case starts and as it ends (with its wall time), so that a "
                     "shard that goes quiet says which case it is on");
+  fuzzCmd->add_flag("--json", fuzz.json, "Print the campaign's result as one JSON object");
   CLI::Option* fuzzMerge = fuzzCmd->add_option("--merge", fuzz.merge, "Merge the --out folders of a campaign's shards");
   CLI::Option* fuzzCheck = fuzzCmd->add_option("--check", fuzz.check, "Check the properties on this board instead");
-  // --time is seconds of board time here as in run, record and verify: the --check run's length.
-  CLI::Option* fuzzTime = fuzzCmd->add_option("--time", fuzz.run.time, "With --check: seconds of board time to simulate")
+  // --time is seconds of board time here as in run, record and verify: the run's length.
+  CLI::Option* fuzzTime = fuzzCmd->add_option("--time", fuzz.run.time, "With --check or BOARD: seconds of board time to simulate")
                               ->capture_default_str();
-  CLI::Option* fuzzKeys = fuzzCmd->add_option("--keys", fuzz.run.keys, "With --check: key script");
-  CLI::Option* fuzzExpect = fuzzCmd->add_option(
-      "--expect", fuzz.expect, "With --check: the user's expectations about the board (docs/fuzzing.md, \"Expectations\")");
+  CLI::Option* fuzzKeys = fuzzCmd->add_option("--keys", fuzz.run.keys, "With --check or BOARD: key script");
+  fuzzCmd->add_option("--expect", fuzz.expect,
+                      "With --check or BOARD: your expectations about the board (docs/fuzzing.md, \"Expectations\")");
   addStrictOption(*fuzzCmd, fuzz.run.strict);
-  CLI::Option* fuzzModel = fuzzCmd->add_option("--model", fuzz.run.model, "With --check: ballistic or classic")->capture_default_str();
-  CLI::Option* fuzzMaxTick =
-      fuzzCmd->add_option("--max-tick", fuzz.run.maxTick, "With --check: maximum tick length, seconds")->capture_default_str();
-  for (CLI::Option* checkOnly : {fuzzKeys, fuzzModel, fuzzMaxTick, fuzzExpect}) checkOnly->needs(fuzzCheck);
+  CLI::Option* fuzzModel =
+      fuzzCmd->add_option("--model", fuzz.run.model, "With --check or BOARD: ballistic or classic")->capture_default_str();
+  CLI::Option* fuzzMaxTick = fuzzCmd->add_option("--max-tick", fuzz.run.maxTick, "With --check or BOARD: maximum tick length, seconds")
+                                 ->capture_default_str();
+  // The variations of BOARD's run (docs/fuzzing.md, "Fuzzing your own board"): 0 or off switches one off.
+  gizmo::verify::fuzz::VariationOptions& vary = fuzz.vary;
+  const std::pair<const char*, std::pair<double*, const char*>> ranges[] = {
+      {"--vary-keys", {&vary.keyPressesPer10s, "Key presses added per 10 s of board time, on average (0: none)"}},
+      {"--vary-position", {&vary.position, "L a ball may move, where it still fits (0: none)"}},
+      {"--vary-speed", {&vary.speed, "% a moving ball's speed may change (0: none)"}},
+      {"--vary-angle", {&vary.angle, "Degrees a moving ball's direction may turn (0: none)"}},
+      {"--vary-kick", {&vary.kick, "L/s a ball at rest may be given (0: none)"}},
+      {"--vary-gravity", {&vary.gravity, "% gravity may change (0: none)"}},
+      {"--vary-friction", {&vary.friction, "% each friction constant may change (0: none)"}}};
+  std::vector<CLI::Option*> varyOptions;
+  for (const auto& [flag, target] : ranges)
+    varyOptions.push_back(fuzzCmd->add_option(flag, *target.first, target.second)->capture_default_str()->group("Variations of BOARD"));
+  varyOptions.push_back(fuzzCmd->add_option("--vary-model", vary.model, "One case in four runs the other motion model (on|off)")
+                            ->capture_default_str()->group("Variations of BOARD"));
+  varyOptions.push_back(fuzzCmd->add_option("--vary-max-tick", vary.maxTick,
+                                            "One case in four halves or doubles the maximum tick (on|off)")
+                            ->capture_default_str()->group("Variations of BOARD"));
   fuzzMerge->excludes(fuzzCheck);
   for (const char* campaignOnly :
-       {"--count", "--seed", "--jobs", "--shard", "--out", "--budget", "--shrink-budget", "--log-cases"}) {
+       {"--count", "--seed", "--jobs", "--shard", "--out", "--budget", "--shrink-budget", "--log-cases", "--json"}) {
     fuzzMerge->excludes(fuzzCmd->get_option(campaignOnly));
     fuzzCheck->excludes(fuzzCmd->get_option(campaignOnly));
   }
+  for (CLI::Option* v : varyOptions) fuzzCheck->excludes(v);
   fuzzMerge->excludes(fuzzCmd->get_option("--property"));
-  fuzzCmd->callback([&] {
+  fuzzCmd->callback([&, fuzzTime, fuzzKeys, fuzzModel, fuzzMaxTick, varyOptions] {
     fuzz.boardTimeGiven = fuzzTime->count() > 0;
+    fuzz.keysGiven = fuzzKeys->count() > 0;
+    fuzz.modelGiven = fuzzModel->count() > 0;
+    fuzz.maxTickGiven = fuzzMaxTick->count() > 0;
+    if (fuzz.board.empty())
+      for (CLI::Option* v : varyOptions)
+        if (v->count() > 0) {
+          std::cerr << "gizmo fuzz: " << v->get_name() << " varies a BOARD of yours: give one\n";
+          code = kExitBadInput;
+          return;
+        }
     code = fuzzCommand(fuzz);
   });
 

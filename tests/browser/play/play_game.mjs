@@ -172,5 +172,11 @@ if (scenario === "keys") {
   const certified = gizmoRun("verify", log, "--certify");
   if (!/wrong decisions: 0/.test(certified)) fail(`gizmo verify --certify: ${certified}`);
   say(`gizmo verify --certify: ${certified.split("\n")[0]}`);
+  // The game as the starting point of a campaign of variations (docs/fuzzing.md, "Fuzzing your
+  // own board"): its board and key input, varied, under every property.
+  const fuzzed = gizmoRun("fuzz", log, "--count", "8", "--seed", "1");
+  if (!/^fuzz: variations of run [0-9a-f]{16}, seed 1, 8 of 8 cases, 6 properties .*, 0 failures/.test(fuzzed))
+    fail(`gizmo fuzz LOG: ${fuzzed}`);
+  say(`gizmo fuzz LOG: ${fuzzed.trim()}`);
 }
 console.log(`play ${scenario}: passed (${end.events} events over ${end.time_value} s; log and screenshots in ${outDir})`);

@@ -14,6 +14,7 @@
 
 #include "gizmo/core/math/precision.hpp"
 #include "gizmo/io/board_writer.hpp"
+#include "gizmo/replay/checksum.hpp"
 #include "gizmo/replay/replay.hpp"
 #include "gizmo/verify/fuzz/run_description.hpp"
 #include "gizmo/verify/fuzz/run_generator.hpp"
@@ -25,7 +26,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kResultsFile = "results.txt";
-constexpr const char* kResultsMagic = "gizmo-fuzz-results 1";
+// Version 2 added the `cases` line; a version 1 file holds generated cases.
+constexpr const char* kResultsMagic = "gizmo-fuzz-results 2";
+constexpr const char* kResultsMagicV1 = "gizmo-fuzz-results 1";
 
 // A property that throws does not hold: the exception is what it says.
 PropertyResult checkSafely(const Property& p, const RunRequest& run) {
@@ -72,10 +75,61 @@ RunRequest caseRun(std::uint64_t campaignSeed, std::uint64_t index) {
   return generateRun(caseSeed(campaignSeed, index), caseSize(index));
 }
 
+namespace {
+
+class GeneratedSource final : public CaseSource {
+ public:
+  RunRequest run(std::uint64_t campaignSeed, std::uint64_t index) const override { return caseRun(campaignSeed, index); }
+  Shrunk shrink(std::uint64_t, std::uint64_t, const RunRequest& failing, const std::function<bool(const RunRequest&)>& fails,
+                std::size_t budget) const override {
+    const Minimised m = minimise(failing, fails, budget);
+    return {m.run, m.steps, ""};
+  }
+  std::string describe() const override { return "generated"; }
+};
+
+}  // namespace
+
+const CaseSource& generatedCases() {
+  static const GeneratedSource source;
+  return source;
+}
+
+VariationSource::VariationSource(RunRequest base, VariationOptions options)
+    : base_(std::move(base)), options_(options) {}
+
+Departure VariationSource::departure(std::uint64_t campaignSeed, std::uint64_t index) const {
+  if (index == 0) return {};  // case 0: the user's run as given
+  return randomDeparture(base_, caseSeed(campaignSeed, index), options_);
+}
+
+RunRequest VariationSource::run(std::uint64_t campaignSeed, std::uint64_t index) const {
+  return applyDeparture(base_, departure(campaignSeed, index));
+}
+
+CaseSource::Shrunk VariationSource::shrink(std::uint64_t campaignSeed, std::uint64_t index, const RunRequest&,
+                                           const std::function<bool(const RunRequest&)>& fails,
+                                           std::size_t budget) const {
+  const ShrunkDeparture s = shrinkDeparture(base_, departure(campaignSeed, index), fails, budget, options_.shortestRun);
+  return {applyDeparture(base_, s.departure), s.steps, describeDeparture(base_, s.departure)};
+}
+
+std::string VariationSource::describe() const {
+  const std::string run = describeRun(base_);
+  const std::uint64_t h = replay::checksum64({reinterpret_cast<const std::uint8_t*>(run.data()), run.size()});
+  const VariationOptions& o = options_;
+  return "variations of run " + hex(h) + " keys " + shortest(o.keyPressesPer10s) + " position " + shortest(o.position) +
+         " speed " + shortest(o.speed) + " angle " + shortest(o.angle) + " kick " + shortest(o.kick) + " gravity " +
+         shortest(o.gravity) + " friction " + shortest(o.friction) + " model " + (o.model ? "on" : "off") +
+         " max-tick " + (o.maxTick ? "on" : "off");
+}
+
 CampaignResult runCampaign(const CampaignOptions& o) {
   if (o.shards == 0 || o.shard >= o.shards) throw CampaignError("shard " + std::to_string(o.shard) + " of " +
                                                                  std::to_string(o.shards) + " does not exist");
+  const CaseSource& source = o.source ? *o.source : generatedCases();
   CampaignResult result;
+  result.cases = source.describe();
   result.seed = o.seed;
   result.count = o.count;
   for (const Property* p : o.properties) result.properties += (result.properties.empty() ? "" : ",") + std::string(p->name);
@@ -104,7 +158,7 @@ CampaignResult runCampaign(const CampaignOptions& o) {
         std::lock_guard<std::mutex> lock(progressMutex);
         o.caseStarted(index);
       }
-      const RunRequest run = caseRun(o.seed, index);
+      const RunRequest run = source.run(o.seed, index);
       std::uint64_t failed = 0;
       const std::vector<PropertyResult> results = checkProperties(o.properties, run);
       for (std::size_t k = 0; k < o.properties.size(); ++k) {
@@ -119,10 +173,12 @@ CampaignResult runCampaign(const CampaignOptions& o) {
         c.fingerprint = r.fingerprint;
         if (!r.holds) {
           ++failed;
-          const Minimised m =
-              minimise(run, [&](const RunRequest& candidate) { return !checkSafely(*p, candidate).holds; }, o.shrinkBudget);
+          const CaseSource::Shrunk m = source.shrink(
+              o.seed, index, run, [&](const RunRequest& candidate) { return !checkSafely(*p, candidate).holds; },
+              o.shrinkBudget);
           c.minimal = m.run;
           c.shrinkSteps = m.steps;
+          c.departure = m.departure;
           const PropertyResult minimal = checkSafely(*p, m.run);
           c.message = minimal.message;
           c.failedAt = minimal.failedAt;
@@ -182,19 +238,20 @@ std::string summaryLine(const CampaignResult& r) {
   }
   const std::size_t propertyCount = std::size_t(std::count(r.properties.begin(), r.properties.end(), ',')) + 1;
   std::ostringstream s;
+  if (r.cases != "generated") s << r.cases.substr(0, r.cases.find(" keys ")) << ", ";
   s << "seed " << r.seed << ", " << cases << " of " << r.count << " cases, " << propertyCount << " properties ("
     << r.properties << "): " << r.outcomes.size() << " checks, " << failureCount(r) << " failures, digest " << hex(h)
     << (r.complete ? "" : " (stopped early)");
   return s.str();
 }
 
-void writeCampaign(CampaignResult& r, const std::string& dir, const std::string& gizmo) {
+void writeCampaign(CampaignResult& r, const std::string& dir, const std::string& gizmo, const std::string& checkArguments) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw CampaignError("cannot create " + dir + ": " + ec.message());
   std::ostringstream results;
-  results << kResultsMagic << "\nseed " << r.seed << "\ncount " << r.count << "\nproperties " << r.properties
-          << "\nshards " << r.shards << "\nshard";
+  results << kResultsMagic << "\ncases " << r.cases << "\nseed " << r.seed << "\ncount " << r.count
+          << "\nproperties " << r.properties << "\nshards " << r.shards << "\nshard";
   for (std::uint64_t s : r.shardsIncluded) results << ' ' << s;
   results << "\ncomplete " << (r.complete ? "yes" : "no") << "\n";
   for (CaseOutcome& c : r.outcomes) {
@@ -218,12 +275,16 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
                                   quoted((folder / "board.xml").string()) + " --keys " +
                                   quoted((folder / "keys.txt").string()) + " --model " +
                                   std::string(motionModelName(c.minimal.model)) + " --max-tick " +
-                                  shortest(c.minimal.maxTick) + " --time " + shortest(c.minimal.duration);
+                                  shortest(c.minimal.maxTick) + " --time " + shortest(c.minimal.duration) +
+                                  checkArguments;
       writeFile(folder / "command.txt", command + "\n");
+      const std::string departure =
+          c.departure.empty() ? "" : "departure from the run given: " + c.departure + "\n";
+      if (!departure.empty()) writeFile(folder / "departure.txt", c.departure + "\n");
       writeFile(folder / "failure.txt", "property " + c.property + ", case " + std::to_string(c.index) + " (seed " +
                                             hex(c.seed) + ", size " + std::to_string(c.size) + "), shrunk in " +
-                                            std::to_string(c.shrinkSteps) + " steps\n" + c.message + "\n\n" +
-                                            describeRun(c.minimal) + logExtent(c.minimal, logged));
+                                            std::to_string(c.shrinkSteps) + " steps\n" + departure + c.message +
+                                            "\n\n" + describeRun(c.minimal) + logExtent(c.minimal, logged));
     }
     results << "case " << c.index << ' ' << hex(c.seed) << ' ' << c.size << ' ' << c.property << ' '
             << (c.holds ? "holds" : "fails") << ' ' << hex(c.fingerprint) << ' ' << (c.holds ? "-" : c.folder) << "\n";
@@ -259,7 +320,8 @@ CampaignResult readCampaign(const std::string& dir) {
     return v;
   };
   ++lineNo;
-  if (!std::getline(in, line) || line != kResultsMagic) throw bad("not a gizmo fuzz results file");
+  if (!std::getline(in, line) || (line != kResultsMagic && line != kResultsMagicV1)) throw bad("not a gizmo fuzz results file");
+  r.cases = line == kResultsMagicV1 ? "generated" : header("cases");
   r.seed = number(header("seed"));
   r.count = number(header("count"));
   r.properties = header("properties");
@@ -309,15 +371,16 @@ CampaignResult mergeCampaigns(const std::vector<std::pair<std::string, CampaignR
   if (parts.empty()) throw CampaignError("nothing to merge");
   const CampaignResult& first = parts.front().second;
   CampaignResult merged;
+  merged.cases = first.cases;
   merged.seed = first.seed;
   merged.count = first.count;
   merged.properties = first.properties;
   merged.shards = first.shards;
   std::vector<std::string> owner(first.shards);
   for (const auto& [dir, part] : parts) {
-    if (part.seed != first.seed || part.count != first.count || part.properties != first.properties ||
-        part.shards != first.shards)
-      throw CampaignError(dir + " is from another campaign (seed, count, properties or shard count differ from " +
+    if (part.cases != first.cases || part.seed != first.seed || part.count != first.count ||
+        part.properties != first.properties || part.shards != first.shards)
+      throw CampaignError(dir + " is from another campaign (cases, seed, count, properties or shard count differ from " +
                           parts.front().first + ")");
     for (std::uint64_t s : part.shardsIncluded) {
       if (s >= merged.shards) throw CampaignError(dir + " holds shard " + std::to_string(s) + " of " + std::to_string(merged.shards));

@@ -270,4 +270,33 @@ std::vector<ExpectationFailure> checkExpectations(RunRequest request, const std:
   return checker.failures;
 }
 
+void checkExpectationNames(const RunRequest& request, const std::vector<Expectation>& expectations) {
+  std::unique_ptr<GameBoard<double>> board = prepareRun<double>(request);
+  ExpectationChecker checker(*board, expectations, request.duration);  // resolves every name, or throws
+}
+
+Property expectationsProperty(std::vector<Expectation> expectations) {
+  Property p;
+  p.name = kExpectationsPropertyName;
+  p.summary = "the expectations of the --expect file hold";
+  p.check = [expectations = std::move(expectations)](const RunRequest& run) {
+    std::vector<ExpectationFailure> broken;
+    try {
+      broken = checkExpectations(run, expectations);
+    } catch (const ExpectationError& e) {
+      return PropertyResult{false, e.what(), 0};
+    }
+    if (broken.empty()) return PropertyResult{true, "", 0};
+    const auto first = std::min_element(broken.begin(), broken.end(), [](const auto& a, const auto& b) {
+      return a.time < b.time || (a.time == b.time && a.expectation < b.expectation);
+    });
+    std::uint64_t fingerprint = 0xcbf29ce484222325ULL;
+    for (const ExpectationFailure& f : broken) fingerprint = (fingerprint ^ f.expectation) * 0x100000001b3ULL;
+    std::string message = first->message;
+    if (broken.size() > 1) message += " (and " + std::to_string(broken.size() - 1) + " other expectations broken)";
+    return PropertyResult{false, message, fingerprint, first->time};
+  };
+  return p;
+}
+
 }  // namespace gizmo::verify::fuzz

@@ -387,23 +387,21 @@ PropertyResult compareModelDecisions(std::vector<PhysicalDecision> c, std::vecto
   return {true, "", digest.h};
 }
 
-namespace {
-
-constexpr Property kProperties[] = {
-    {"no-tunnelling", "no ball inside a gizmo or beyond a wall, at every event and between events", &noTunnelling,
-     Invariant::NoTunnelling},
-    {"energy", "energy rises only by what flipper hits, absorber shots and boosters supply; friction ticks slow balls", &energy,
-     Invariant::Energy},
-    {"event-queue", "time never goes back; the queue holds exactly the pending events; every moving ball is covered",
-     &eventQueue, Invariant::EventQueue},
-    {"replay-identity", "recording twice gives the same log, and replaying it gives the same decisions", &replayIdentity},
-    {"round-trip", "board -> XML -> board and board -> text -> board give the same board; key scripts too", &roundTrip},
-    {"models-agree", "with gravity and friction 0, classic and ballistic make the same decisions", &modelsAgree},
-};
-
-}  // namespace
-
-std::span<const Property> allProperties() { return kProperties; }
+std::span<const Property> allProperties() {
+  // Built on first use: a std::function is not constant, and no static initialiser may meet it unbuilt.
+  static const Property all[] = {
+      {"no-tunnelling", "no ball inside a gizmo or beyond a wall, at every event and between events", &noTunnelling,
+       Invariant::NoTunnelling},
+      {"energy", "energy rises only by what flipper hits, absorber shots and boosters supply; friction ticks slow balls", &energy,
+       Invariant::Energy},
+      {"event-queue", "time never goes back; the queue holds exactly the pending events; every moving ball is covered",
+       &eventQueue, Invariant::EventQueue},
+      {"replay-identity", "recording twice gives the same log, and replaying it gives the same decisions", &replayIdentity},
+      {"round-trip", "board -> XML -> board and board -> text -> board give the same board; key scripts too", &roundTrip},
+      {"models-agree", "with gravity and friction 0, classic and ballistic make the same decisions", &modelsAgree},
+  };
+  return all;
+}
 
 std::vector<PropertyResult> checkProperties(std::span<const Property* const> properties, const RunRequest& run) {
   auto threw = [](const std::exception& e) { return PropertyResult{false, std::string("threw: ") + e.what(), 0}; };
@@ -437,14 +435,14 @@ std::vector<PropertyResult> checkProperties(std::span<const Property* const> pro
 }
 
 const Property* findProperty(std::string_view name) {
-  for (const Property& p : kProperties)
+  for (const Property& p : allProperties())
     if (p.name == name) return &p;
   return nullptr;
 }
 
 std::string propertyNames() {
   std::string s;
-  for (const Property& p : kProperties) s += (s.empty() ? "" : ", ") + std::string(p.name);
+  for (const Property& p : allProperties()) s += (s.empty() ? "" : ", ") + std::string(p.name);
   return s;
 }
 

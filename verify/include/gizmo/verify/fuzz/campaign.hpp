@@ -13,11 +13,50 @@
 
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/verify/fuzz/properties.hpp"
+#include "gizmo/verify/fuzz/variations.hpp"
 
 namespace gizmo::verify::fuzz {
 
+// What a campaign's cases are: boards generated from the seed (the default), or variations of a
+// run the user brought (`gizmo fuzz BOARD`). Case k is made from (campaign seed, k) alone either
+// way, and a failing case is shrunk the way its source knows: to a minimal board, or back toward
+// the user's run.
+class CaseSource {
+ public:
+  virtual ~CaseSource() = default;
+  virtual RunRequest run(std::uint64_t campaignSeed, std::uint64_t index) const = 0;
+  struct Shrunk {
+    RunRequest run;
+    std::size_t steps = 0;
+    std::string departure;  // variations: the smallest departure from the user's run, in words
+  };
+  virtual Shrunk shrink(std::uint64_t campaignSeed, std::uint64_t index, const RunRequest& failing,
+                        const std::function<bool(const RunRequest&)>& fails, std::size_t budget) const = 0;
+  // What results.txt says the cases are ("generated", or "variations of board HASH, …"): shards of
+  // campaigns of different sources are never merged.
+  virtual std::string describe() const = 0;
+};
+
+// Variations of `base`: case 0 is the base itself, case k > 0 the departure drawn from the case's
+// seed. `describe` names the base by a hash of everything it is, and the options.
+class VariationSource final : public CaseSource {
+ public:
+  VariationSource(RunRequest base, VariationOptions options);
+  RunRequest run(std::uint64_t campaignSeed, std::uint64_t index) const override;
+  Shrunk shrink(std::uint64_t campaignSeed, std::uint64_t index, const RunRequest& failing,
+                const std::function<bool(const RunRequest&)>& fails, std::size_t budget) const override;
+  std::string describe() const override;
+  Departure departure(std::uint64_t campaignSeed, std::uint64_t index) const;
+  const RunRequest& base() const { return base_; }
+
+ private:
+  RunRequest base_;
+  VariationOptions options_;
+};
+
 struct CampaignOptions {
   std::vector<const Property*> properties;
+  const CaseSource* source = nullptr;  // nullptr: generated boards
   std::uint64_t count = 100;
   std::uint64_t seed = 1;
   unsigned jobs = 1;
@@ -44,6 +83,7 @@ struct CaseOutcome {
   // When it does not hold:
   std::string message;     // for the minimal run
   RunRequest minimal;
+  std::string departure;   // a variation's: how the minimal run departs from the user's, in words
   std::size_t shrinkSteps = 0;
   std::optional<double> failedAt = std::nullopt;  // when the minimal run failed, where the property says
   std::string folder;      // where its files are, relative to the campaign's folder (once written)
@@ -52,6 +92,7 @@ struct CaseOutcome {
 struct CampaignResult {
   std::uint64_t seed = 0, count = 0;
   std::string properties;                     // comma-separated, in the order checked
+  std::string cases = "generated";            // CaseSource::describe()
   std::vector<std::uint64_t> shardsIncluded;  // which shards of `shards` this holds
   std::uint64_t shards = 1;
   bool complete = true;  // false: stopped before every case of its shards ran
@@ -66,6 +107,8 @@ class CampaignError : public std::runtime_error {
 // The case's size: cases cycle through every size from 0 to kMaxSize.
 int caseSize(std::uint64_t index);
 RunRequest caseRun(std::uint64_t campaignSeed, std::uint64_t index);
+// The default source: generateRun(caseSeed(seed, k), caseSize(k)), shrunk by minimise().
+const CaseSource& generatedCases();
 
 CampaignResult runCampaign(const CampaignOptions& options);
 
@@ -81,8 +124,11 @@ std::string summaryLine(const CampaignResult& r);
 // Writes dir/results.txt (one line per outcome) and, for each failure, a folder with the minimal
 // board (board.xml), its key script (keys.txt), its replay log (run.gzlog), what failed
 // (failure.txt) and the one-line command that checks it again (command.txt). `gizmo` is how the
-// command names the program. Throws CampaignError when dir cannot be written.
-void writeCampaign(CampaignResult& r, const std::string& dir, const std::string& gizmo);
+// command names the program, and `checkArguments` ends the command (" --expect FILE" for a
+// campaign with the user's expectations). A variation's failure also has departure.txt: how its
+// minimal run departs from the user's, in words. Throws CampaignError when dir cannot be written.
+void writeCampaign(CampaignResult& r, const std::string& dir, const std::string& gizmo,
+                   const std::string& checkArguments = "");
 // Reads what writeCampaign wrote. Throws CampaignError (naming the file and line) when it is not,
 // and when a result that says it is complete lacks a check of its shards or holds one twice, or
 // holds a case of another shard: a file cut short or edited, never merged as if whole.

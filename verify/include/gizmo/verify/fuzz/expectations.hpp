@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "gizmo/core/run/run.hpp"
+#include "gizmo/verify/fuzz/properties.hpp"
 
 namespace gizmo::verify::fuzz {
 
@@ -62,5 +63,14 @@ struct ExpectationFailure {
 // first failure of each expectation broken (none: all hold). A ball or gizmo the board does not
 // have, or a `reaches` of a gizmo that is no absorber, is an ExpectationError.
 std::vector<ExpectationFailure> checkExpectations(RunRequest request, const std::vector<Expectation>& expectations);
+
+// Throws the ExpectationError checkExpectations would for a name the board lacks, without running.
+void checkExpectationNames(const RunRequest& request, const std::vector<Expectation>& expectations);
+
+// The expectations as one more property, "expectations", that a campaign checks beside the six:
+// it holds when every expectation holds, and otherwise says the first one broken (by board time)
+// and how many others are. A name the board lacks fails it too, with the ExpectationError's text.
+Property expectationsProperty(std::vector<Expectation> expectations);
+inline constexpr std::string_view kExpectationsPropertyName = "expectations";
 
 }  // namespace gizmo::verify::fuzz

@@ -2,6 +2,7 @@
 // The properties that `gizmo fuzz` and the property tests check on generated runs, by name. Each
 // takes one run and says whether it holds, and if not, why (with exact values).
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -25,7 +26,9 @@ struct PropertyResult {
 struct Property {
   std::string_view name;
   std::string_view summary;
-  PropertyResult (*check)(const RunRequest& run);
+  // A function rather than a pointer, so that a property may hold what it checks against (the
+  // user's expectations: expectationsProperty in expectations.hpp).
+  std::function<PropertyResult(const RunRequest& run)> check;
   std::optional<Invariant> invariant = std::nullopt;  // the invariant it checks, for those that are one
 };
 
