@@ -121,35 +121,34 @@ Departure randomDeparture(const RunRequest& base, std::uint64_t seed, const Vari
         d.moved.emplace_back(k, std::max(0.0, base.keys[k].time + r.real(-0.5, 0.5)));
     }
   }
+  // Each ball's change is drawn whole (place, speed, direction, kick) and kept only where the
+  // board has no problem it did not have (an overlap, or a ball at rest in an absorber set moving):
+  // up to four draws, else the ball is left as it was.
   const std::size_t problems = checkBoardSpec(base.board).size();
   for (std::size_t i = 0; i < base.board.balls.size(); ++i) {
     if (!r.chance(2)) continue;
     const BallSpec& ball = base.board.balls[i];
-    BallDeparture b;
-    b.ball = i;
-    if (o.position > 0) {
-      // Where the ball still fits: no problem the base board did not have.
-      for (int attempt = 0; attempt < 4; ++attempt) {
-        double dx = 0, dy = 0;
-        inDisc(r, o.position, dx, dy);
-        BoardSpec moved = base.board;
-        moved.balls[i].x += dx, moved.balls[i].y += dy;
-        if (checkBoardSpec(moved).size() <= problems) {
-          b.dx = dx, b.dy = dy;
-          break;
+    for (int attempt = 0; attempt < 4; ++attempt) {
+      BallDeparture b;
+      b.ball = i;
+      if (o.position > 0) inDisc(r, o.position, b.dx, b.dy);
+      if (ball.vx != 0 || ball.vy != 0) {
+        if (o.speed > 0) b.speedFactor = 1 + r.real(-o.speed, o.speed) / 100;
+        if (o.angle > 0) {
+          const double t = halfTurnTangent(std::min(o.angle, 179.0));
+          b.turn = r.real(-t, t);
         }
+      } else if (o.kick > 0) {
+        inDisc(r, o.kick, b.kickVx, b.kickVy);
+      }
+      if (sameBallChange(b)) break;
+      Departure alone;
+      alone.balls.push_back(b);
+      if (checkBoardSpec(applyDeparture(base, alone).board).size() <= problems) {
+        d.balls.push_back(b);
+        break;
       }
     }
-    if (ball.vx != 0 || ball.vy != 0) {
-      if (o.speed > 0) b.speedFactor = 1 + r.real(-o.speed, o.speed) / 100;
-      if (o.angle > 0) {
-        const double t = halfTurnTangent(std::min(o.angle, 179.0));
-        b.turn = r.real(-t, t);
-      }
-    } else if (o.kick > 0) {
-      inDisc(r, o.kick, b.kickVx, b.kickVy);
-    }
-    if (!sameBallChange(b)) d.balls.push_back(b);
   }
   if (o.gravity > 0 && base.board.gravity != 0 && r.chance(2)) d.gravityFactor = 1 + r.real(-o.gravity, o.gravity) / 100;
   if (o.friction > 0 && (base.board.mu != 0 || base.board.mu2 != 0) && r.chance(2)) {
@@ -262,12 +261,17 @@ ShrunkDeparture shrinkDeparture(const RunRequest& base, const Departure& failing
                                 const std::function<bool(const RunRequest&)>& fails, std::size_t budget,
                                 double shortestRun) {
   ShrunkDeparture s{failing, 0, 0};
+  const std::size_t problems = checkBoardSpec(base.board).size();
   for (bool progress = true; progress && s.tries < budget;) {
     progress = false;
     for (Departure& candidate : departuresCloser(base, s.departure, shortestRun)) {
       if (s.tries >= budget) break;
+      // Half a move or a kick may land where the whole did not: a ball overlapping a gizmo, or
+      // moving inside an absorber. Such a run is not a variation of the board at all.
+      const RunRequest run = applyDeparture(base, candidate);
+      if (checkBoardSpec(run.board).size() > problems) continue;
       ++s.tries;
-      if (fails(applyDeparture(base, candidate))) {
+      if (fails(run)) {
         s.departure = std::move(candidate);
         ++s.steps;
         progress = true;
