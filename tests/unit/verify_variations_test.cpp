@@ -8,13 +8,17 @@
 #include <string>
 #include <vector>
 
+#include <filesystem>
+
 #include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/io/board_file.hpp"
 #include "gizmo/verify/fuzz/campaign.hpp"
 #include "gizmo/verify/fuzz/expectations.hpp"
 #include "gizmo/verify/fuzz/run_description.hpp"
 #include "gizmo/verify/fuzz/seeded_random.hpp"
 #include "gizmo/verify/fuzz/variations.hpp"
 #include "support/board_builder.hpp"
+#include "support/paths.hpp"
 
 namespace gizmo::verify::fuzz {
 namespace {
@@ -160,6 +164,37 @@ TEST(Variations, APlantedWindowOfKeyTimingIsFoundAndShrunkToOnePress) {
   const VariationSource still(plantedWindow(), noKeys);
   c.source = &still;
   EXPECT_EQ(failureCount(runCampaign(c)), 0u);
+}
+
+// Every fixture board that is a board (not the malformed ones, nor the foreign formats that are
+// refused), read as `gizmo run` reads it, and four cases of its variations over 3 s: the board as
+// given and three variations, every property holds.
+TEST(Variations, EveryFixtureBoardHoldsEveryPropertyOverVariations) {
+  namespace fs = std::filesystem;
+  std::vector<const Property*> all;
+  for (const Property& p : allProperties()) all.push_back(&p);
+  int boards = 0;
+  for (const fs::directory_entry& e : fs::recursive_directory_iterator(test::fixturePath("boards"))) {
+    const std::string path = e.path().string();
+    const std::string ext = e.path().extension().string();
+    if (!e.is_regular_file() || (ext != ".txt" && ext != ".xml") || path.find("malformed") != std::string::npos ||
+        path.find("foreign") != std::string::npos)
+      continue;
+    RunRequest base;
+    base.board = io::readBoardFile(path).board;
+    base.duration = 3;
+    const VariationSource source(base, VariationOptions{});
+    CampaignOptions c;
+    c.properties = all;
+    c.source = &source;
+    c.count = 4;
+    c.seed = 41;
+    c.shrinkBudget = 0;  // a failure is reported as found, not shrunk
+    const CampaignResult r = runCampaign(c);
+    for (const CaseOutcome& o : r.outcomes) EXPECT_TRUE(o.holds) << path << " case " << o.index << " " << o.property << ": " << o.message;
+    ++boards;
+  }
+  EXPECT_GE(boards, 70);
 }
 
 }  // namespace
