@@ -50,6 +50,8 @@ RunRequest specLike() {
   r.board.balls.push_back(ballAt("B1", 5.5, 11.74, 3, -2));
   r.board.balls.push_back(ballAt("B2", 12, 4));
   r.board.balls.push_back(ballAt("B3", 10.5, 19.5));  // at rest in the absorber: captured, and must not be kicked
+  r.board.balls.push_back(ballAt("B4", 15, 10));       // two balls 0.02 L apart: each may move, not into the other
+  r.board.balls.push_back(ballAt("B5", 15.52, 10));
   r.keys = {{1.0, 65, KeyDirection::Down}, {2.0, 65, KeyDirection::Up}};
   r.duration = 5;
   return r;
@@ -74,8 +76,9 @@ TEST(Variations, AcaseIsMadeFromItsSeedAlone) {
   EXPECT_NE(describeRun(a.run(11, 1)), describeRun(a.run(12, 1)));
 }
 
-// A ball is never moved into a gizmo, nor a ball at rest in an absorber set moving there (the
-// reader refuses both; a kicked captured ball once failed no-tunnelling and round-trip).
+// A ball is never moved into a gizmo or another ball, nor a ball at rest in an absorber set moving
+// there (the reader refuses each; a kicked captured ball once failed no-tunnelling and round-trip,
+// and two balls of a real board, each moved where it fitted alone, overlapped).
 TEST(Variations, KeysStayInOrderWithinTheRunAndBallsStillFit) {
   const RunRequest base = specLike();
   const std::size_t problems = checkBoardSpec(base.board).size();

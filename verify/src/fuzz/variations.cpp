@@ -122,8 +122,8 @@ Departure randomDeparture(const RunRequest& base, std::uint64_t seed, const Vari
     }
   }
   // Each ball's change is drawn whole (place, speed, direction, kick) and kept only where the
-  // board has no problem it did not have (an overlap, or a ball at rest in an absorber set moving):
-  // up to four draws, else the ball is left as it was.
+  // board, with the changes before it, has no problem it did not have (an overlap, or a ball at
+  // rest in an absorber set moving): up to four draws, else the ball is left as it was.
   const std::size_t problems = checkBoardSpec(base.board).size();
   for (std::size_t i = 0; i < base.board.balls.size(); ++i) {
     if (!r.chance(2)) continue;
@@ -142,9 +142,11 @@ Departure randomDeparture(const RunRequest& base, std::uint64_t seed, const Vari
         inDisc(r, o.kick, b.kickVx, b.kickVy);
       }
       if (sameBallChange(b)) break;
-      Departure alone;
-      alone.balls.push_back(b);
-      if (checkBoardSpec(applyDeparture(base, alone).board).size() <= problems) {
+      // With the changes of the balls before it: two balls moved toward each other may each fit
+      // alone and overlap together (found on a real board of 180 balls).
+      Departure with = d;
+      with.balls.push_back(b);
+      if (checkBoardSpec(applyDeparture(base, with).board).size() <= problems) {
         d.balls.push_back(b);
         break;
       }
