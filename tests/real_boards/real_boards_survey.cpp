@@ -4,7 +4,8 @@
 //   then runs 60 s of board time in the ballistic model (and the classic one, up to 64 balls)
 //   without stalling, every
 //   ball still on the board, and the canonical text writer's copy of it reads back with no warning
-//   as the same board (so it runs the same decisions);
+//   as the same board (so it runs the same decisions); and the board as given and three
+//   variations of it (`gizmo fuzz BOARD`, 3 s each) hold every property of docs/fuzzing.md;
 // - boards malformed on purpose (M) are refused at a position, or at least never read silently:
 //   what is read leniently is a warning with a position, which --strict refuses;
 // - files of other formats are refused with a message that says what they look like;
@@ -30,6 +31,7 @@
 #include "gizmo/io/board_file.hpp"
 #include "gizmo/io/board_writer.hpp"
 #include "gizmo/io/text_reader.hpp"
+#include "gizmo/verify/fuzz/campaign.hpp"
 
 namespace fs = std::filesystem;
 
@@ -86,6 +88,24 @@ void runs(const BoardSpec& board, Outcome& out) {
   }
 }
 
+// The board as given and three variations of it, 3 s each, under every property: what
+// `gizmo fuzz BOARD --time 3 --count 4 --seed 43` checks.
+void variationsHold(const BoardSpec& board, Outcome& out) {
+  namespace fz = gizmo::verify::fuzz;
+  RunRequest base;
+  base.board = board;
+  base.duration = 3;
+  const fz::VariationSource source(base, fz::VariationOptions{});
+  fz::CampaignOptions c;
+  for (const fz::Property& p : fz::allProperties()) c.properties.push_back(&p);
+  c.source = &source;
+  c.count = 4;
+  c.seed = 43;
+  c.shrinkBudget = 0;
+  for (const fz::CaseOutcome& o : fz::runCampaign(c).outcomes)
+    if (!o.holds) out.failures.push_back("variation " + std::to_string(o.index) + ": " + o.property + ": " + o.message);
+}
+
 void writtenBackIsTheSame(const BoardSpec& board, Outcome& out) {
   try {
     const io::ReadResult again = io::readTextBoard(io::writeTextBoard(board), "written.txt");
@@ -121,6 +141,7 @@ Outcome survey(const fs::path& file, const BoardKind& kind) {
       }
       writtenBackIsTheSame(out.read.board, out);
       runs(out.read.board, out);
+      variationsHold(out.read.board, out);
       break;
     case 'M':
       if (out.loaded && out.read.warnings.empty()) out.failures.push_back("a malformed board loads without a warning");
