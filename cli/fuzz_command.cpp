@@ -87,6 +87,17 @@ nlohmann::ordered_json campaignJson(const fz::CampaignResult& r) {
   return j;
 }
 
+// The scalar of a fuzzed run: double or long double, the two the properties check in.
+bool fuzzScalar(const PrecisionChoice& p, const std::string& what, Precision& scalar) {
+  if (p.kind != Precision::Double && p.kind != Precision::LongDouble) {
+    std::cerr << "gizmo fuzz: " << what << ": the properties check runs in double or long-double, not "
+              << precisionName(p) << '\n';
+    return false;
+  }
+  scalar = p.kind;
+  return true;
+}
+
 // --check: the properties on one run read from files, then the user's expectations about it (a
 // run as long as the longest time they allow). A malformed expectation file is refused before
 // anything is checked.
@@ -98,6 +109,8 @@ int checkOne(const FuzzOptions& o, std::vector<const fz::Property*> properties) 
   RunOptions options = o.run;
   options.board = o.check;
   if (!checkRun(options, "fuzz", run, code)) return code;
+  Precision scalar = Precision::Double;
+  if (!fuzzScalar(run.precision, "--precision", scalar)) return kExitBadInput;
   std::vector<fz::Expectation> expectations;
   try {
     if (!o.expect.empty()) expectations = fz::readExpectationFile(o.expect);
@@ -113,7 +126,7 @@ int checkOne(const FuzzOptions& o, std::vector<const fz::Property*> properties) 
     return kExitBadInput;
   }
   int result = kExitOk;
-  const std::vector<fz::PropertyResult> results = fz::checkProperties(properties, run.request);
+  const std::vector<fz::PropertyResult> results = fz::checkProperties(properties, run.request, scalar);
   for (std::size_t k = 0; k < properties.size(); ++k) {
     const fz::Property* p = properties[k];
     const fz::PropertyResult& r = results[k];
@@ -229,13 +242,17 @@ int runCampaignAndReport(const FuzzOptions& o, fz::CampaignOptions& c, const std
 // The run that `gizmo fuzz BOARD` varies: a board file read as `gizmo run` reads it (warnings
 // included, --strict refusing them), or a replay log's board, model, tick, duration and key input;
 // --keys, --model, --max-tick and --time given on the command line take their place.
-bool baseRun(const FuzzOptions& o, RunRequest& base, int& code) {
+bool baseRun(const FuzzOptions& o, RunRequest& base, Precision& scalar, int& code) {
   if (!isLogFile(o.board)) {
     CheckedRun run;
     RunOptions options = o.run;
     options.board = o.board;
     if (!checkRun(options, "fuzz", run, code)) return false;
     base = run.request;
+    if (!fuzzScalar(run.precision, "--precision", scalar)) {
+      code = kExitBadInput;
+      return false;
+    }
     return true;
   }
   std::optional<replay::OpenedLog> log = openLogFor("fuzz", o.board, code);
@@ -246,6 +263,18 @@ bool baseRun(const FuzzOptions& o, RunRequest& base, int& code) {
     return false;
   }
   base = log->request;
+  const std::optional<PrecisionChoice> given = parsePrecision(o.run.precision);
+  if (o.precisionGiven && !given) {
+    std::cerr << "gizmo fuzz: unknown precision '" << o.run.precision << "' (double or long-double)\n";
+    code = kExitBadInput;
+    return false;
+  }
+  // A log recorded in another scalar (float, mpfr) is refused rather than varied in double unsaid.
+  if (!fuzzScalar(o.precisionGiven ? *given : log->precision, o.precisionGiven ? std::string("--precision") : o.board,
+                  scalar)) {
+    code = kExitBadInput;
+    return false;
+  }
   try {
     if (o.keysGiven) base.keys = loadKeys(o.run.keys);
   } catch (const std::exception& e) {
@@ -292,8 +321,9 @@ bool checkVariations(const fz::VariationOptions& v) {
 int boardCampaign(const FuzzOptions& o, std::vector<const fz::Property*> properties,
                   const std::vector<fz::Expectation>& expectations) {
   RunRequest base;
+  Precision scalar = Precision::Double;
   int code = kExitOk;
-  if (!baseRun(o, base, code)) return code;
+  if (!baseRun(o, base, scalar, code)) return code;
   if (!checkVariations(o.vary)) return kExitBadInput;
   fz::VariationOptions vary = o.vary;
   std::string checkArguments;
@@ -317,7 +347,7 @@ int boardCampaign(const FuzzOptions& o, std::vector<const fz::Property*> propert
     std::cerr << "gizmo fuzz: --property expectations needs --expect FILE\n";
     return kExitBadInput;
   }
-  const fz::VariationSource source(base, vary);
+  const fz::VariationSource source(base, vary, scalar);
   fz::CampaignOptions c;
   c.properties = properties;
   c.source = &source;
@@ -357,9 +387,9 @@ int fuzzCommand(const FuzzOptions& o) {
                  "--budget\n";
     return kExitBadInput;
   }
-  if (o.keysGiven || o.modelGiven || o.maxTickGiven || !o.expect.empty()) {
-    std::cerr << "gizmo fuzz: --keys, --model, --max-tick and --expect describe a run: give --check BOARD or a BOARD "
-                 "to vary\n";
+  if (o.keysGiven || o.modelGiven || o.maxTickGiven || o.precisionGiven || !o.expect.empty()) {
+    std::cerr << "gizmo fuzz: --keys, --model, --max-tick, --precision and --expect describe a run: give --check BOARD "
+                 "or a BOARD to vary\n";
     return kExitBadInput;
   }
   fz::CampaignOptions c;

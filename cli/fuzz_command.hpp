@@ -30,7 +30,7 @@ struct FuzzOptions {
   verify::fuzz::VariationOptions vary;  // --vary-*: the variations of BOARD's run
   bool json = false;        // --json: the campaign's result as one JSON object
   // Which run options were given (a log's own model, tick, duration and keys stand otherwise).
-  bool boardTimeGiven = false, keysGiven = false, modelGiven = false, maxTickGiven = false;
+  bool boardTimeGiven = false, keysGiven = false, modelGiven = false, maxTickGiven = false, precisionGiven = false;
 };
 int fuzzCommand(const FuzzOptions& options);
 // The property names, comma-separated, for the help text.

@@ -157,6 +157,9 @@ int main(int argc, char** argv) {
       fuzzCmd->add_option("--model", fuzz.run.model, "With --check or BOARD: ballistic or classic")->capture_default_str();
   CLI::Option* fuzzMaxTick = fuzzCmd->add_option("--max-tick", fuzz.run.maxTick, "With --check or BOARD: maximum tick length, seconds")
                                  ->capture_default_str();
+  CLI::Option* fuzzPrecision =
+      fuzzCmd->add_option("--precision", fuzz.run.precision, "With --check or BOARD: the scalar, double or long-double")
+          ->capture_default_str();
   // The variations of BOARD's run (docs/fuzzing.md, "Fuzzing your own board"): 0 or off switches one off.
   gizmo::verify::fuzz::VariationOptions& vary = fuzz.vary;
   const std::pair<const char*, std::pair<double*, const char*>> ranges[] = {
@@ -175,6 +178,10 @@ int main(int argc, char** argv) {
   varyOptions.push_back(fuzzCmd->add_option("--vary-max-tick", vary.maxTick,
                                             "One case in four halves or doubles the maximum tick (on|off)")
                             ->capture_default_str()->group("Variations of BOARD"));
+  varyOptions.push_back(fuzzCmd->add_option("--vary-scalar", vary.scalar,
+                                            "One case in four runs in the other of double and long double (on|off; off by "
+                                            "default: long double differs between kinds of machine)")
+                            ->capture_default_str()->group("Variations of BOARD"));
   fuzzMerge->excludes(fuzzCheck);
   for (const char* campaignOnly :
        {"--count", "--seed", "--jobs", "--shard", "--out", "--budget", "--shrink-budget", "--log-cases", "--json"}) {
@@ -183,8 +190,9 @@ int main(int argc, char** argv) {
   }
   for (CLI::Option* v : varyOptions) fuzzCheck->excludes(v);
   fuzzMerge->excludes(fuzzCmd->get_option("--property"));
-  fuzzCmd->callback([&, fuzzTime, fuzzKeys, fuzzModel, fuzzMaxTick, varyOptions] {
+  fuzzCmd->callback([&, fuzzTime, fuzzKeys, fuzzModel, fuzzMaxTick, fuzzPrecision, varyOptions] {
     fuzz.boardTimeGiven = fuzzTime->count() > 0;
+    fuzz.precisionGiven = fuzzPrecision->count() > 0;
     fuzz.keysGiven = fuzzKeys->count() > 0;
     fuzz.modelGiven = fuzzModel->count() > 0;
     fuzz.maxTickGiven = fuzzMaxTick->count() > 0;

@@ -37,7 +37,7 @@ inline rc::Gen<RunRequest> arbitraryRun() {
 inline void requireProperty(const char* name, const RunRequest& run) {
   const verify::fuzz::Property* p = verify::fuzz::findProperty(name);
   RC_ASSERT(p != nullptr);
-  const verify::fuzz::PropertyResult r = p->check(run);
+  const verify::fuzz::PropertyResult r = p->check(run, Precision::Double);
   if (!r.holds)
     RC_FAIL(std::string(name) + " does not hold: " + r.message + "\n(rapidcheck seed " +
             std::to_string(rc::detail::configuration().testParams.seed) + "; run again with RC_PARAMS=\"seed=" +

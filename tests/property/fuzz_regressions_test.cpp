@@ -42,7 +42,7 @@ void expectInvariantsInBothModels(RunRequest run) {
 void expectModelsAgree(const RunRequest& run) {
   const Property* modelsAgree = findProperty("models-agree");
   ASSERT_NE(modelsAgree, nullptr);
-  const PropertyResult r = modelsAgree->check(run);
+  const PropertyResult r = modelsAgree->check(run, Precision::Double);
   EXPECT_TRUE(r.holds) << r.message;
 }
 
@@ -94,7 +94,7 @@ TEST(FuzzRegressions, ABallReachingAnAbsorberAndAFlipperAtOneInstantIsANearTie) 
   run.model = MotionModel::Classic;
   const Property* modelsAgree = findProperty("models-agree");
   ASSERT_NE(modelsAgree, nullptr);
-  const PropertyResult r = modelsAgree->check(run);
+  const PropertyResult r = modelsAgree->check(run, Precision::Double);
   EXPECT_TRUE(r.holds) << r.message;
 }
 

@@ -111,11 +111,35 @@ TEST(Variations, ASwitchedOffVariationNeverHappens) {
   }
 }
 
+// The scalar varies only when asked (long double differs between kinds of machine), and then
+// in about one case in four; its run is checked in long double.
+TEST(Variations, TheScalarVariesOnlyWhenAsked) {
+  VariationOptions on;
+  on.scalar = true;
+  int longDouble = 0;
+  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+    EXPECT_FALSE(randomDeparture(specLike(), seed, VariationOptions{}).otherScalar);
+    const Departure d = randomDeparture(specLike(), seed, on);
+    if (d.otherScalar) ++longDouble;
+    EXPECT_EQ(scalarOf(Precision::Double, d), d.otherScalar ? Precision::LongDouble : Precision::Double);
+    EXPECT_EQ(scalarOf(Precision::LongDouble, d), d.otherScalar ? Precision::Double : Precision::LongDouble);
+  }
+  EXPECT_GT(longDouble, 60);
+  EXPECT_LT(longDouble, 140);
+  const VariationSource source(specLike(), on);
+  std::uint64_t k = 1;
+  while (!source.departure(3, k).otherScalar) ++k;
+  EXPECT_EQ(source.scalar(3, k), Precision::LongDouble);
+  EXPECT_NE(describeDeparture(specLike(), source.departure(3, k)).find("in long double (double given)"), std::string::npos);
+}
+
 TEST(Variations, ShrinkingGoesBackToTheRunGivenWhenEverythingFails) {
   const RunRequest base = specLike();
+  VariationOptions everything;
+  everything.scalar = true;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-    const Departure d = randomDeparture(base, seed, VariationOptions{});
-    const ShrunkDeparture s = shrinkDeparture(base, d, [](const RunRequest&) { return true; }, 10000, 1.0);
+    const Departure d = randomDeparture(base, seed, everything);
+    const ShrunkDeparture s = shrinkDeparture(base, d, [](const RunRequest&, const Departure&) { return true; }, 10000, 1.0);
     Departure back = s.departure;
     ASSERT_TRUE(back.duration.has_value());  // cut as short as allowed, and no shorter
     EXPECT_GE(*back.duration, 1.0);
@@ -143,7 +167,7 @@ TEST(Variations, TheDepartureIsSaidInWords) {
 TEST(Variations, APlantedWindowOfKeyTimingIsFoundAndShrunkToOnePress) {
   const std::vector<Expectation> expect = parseExpectations("avoids 0 0 20 3\n", "window.expect");
   const Property expectations = expectationsProperty(expect);
-  EXPECT_TRUE(expectations.check(plantedWindow()).holds);  // the run given, no key pressed
+  EXPECT_TRUE(expectations.check(plantedWindow(), Precision::Double).holds);  // the run given, no key pressed
 
   VariationOptions options;
   const VariationSource source(plantedWindow(), options);
@@ -159,7 +183,7 @@ TEST(Variations, APlantedWindowOfKeyTimingIsFoundAndShrunkToOnePress) {
     if (o.holds) continue;
     EXPECT_TRUE(std::regex_match(o.departure, onePress)) << "case " << o.index << ": " << o.departure;
     EXPECT_NE(o.message.find("ball B entered the rectangle (0, 0) to (20, 3)"), std::string::npos) << o.message;
-    EXPECT_FALSE(expectations.check(o.minimal).holds);  // the minimal run still fails
+    EXPECT_FALSE(expectations.check(o.minimal, o.scalar).holds);  // the minimal run still fails
   }
   // With the keys left alone, no variation of launch, gravity or model reaches it.
   VariationOptions noKeys;

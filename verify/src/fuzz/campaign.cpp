@@ -31,9 +31,9 @@ constexpr const char* kResultsMagic = "gizmo-fuzz-results 2";
 constexpr const char* kResultsMagicV1 = "gizmo-fuzz-results 1";
 
 // A property that throws does not hold: the exception is what it says.
-PropertyResult checkSafely(const Property& p, const RunRequest& run) {
+PropertyResult checkSafely(const Property& p, const RunRequest& run, Precision scalar) {
   const Property* const one[] = {&p};
-  return checkProperties(one, run).front();
+  return checkProperties(one, run, scalar).front();
 }
 
 std::string hex(std::uint64_t x) {
@@ -80,10 +80,10 @@ namespace {
 class GeneratedSource final : public CaseSource {
  public:
   RunRequest run(std::uint64_t campaignSeed, std::uint64_t index) const override { return caseRun(campaignSeed, index); }
-  Shrunk shrink(std::uint64_t, std::uint64_t, const RunRequest& failing, const std::function<bool(const RunRequest&)>& fails,
+  Shrunk shrink(std::uint64_t, std::uint64_t, const RunRequest& failing, const Fails& fails,
                 std::size_t budget) const override {
-    const Minimised m = minimise(failing, fails, budget);
-    return {m.run, m.steps, ""};
+    const Minimised m = minimise(failing, [&](const RunRequest& r) { return fails(r, Precision::Double); }, budget);
+    return {m.run, Precision::Double, m.steps, ""};
   }
   std::string describe() const override { return "generated"; }
 };
@@ -95,8 +95,12 @@ const CaseSource& generatedCases() {
   return source;
 }
 
-VariationSource::VariationSource(RunRequest base, VariationOptions options)
-    : base_(std::move(base)), options_(options) {}
+VariationSource::VariationSource(RunRequest base, VariationOptions options, Precision scalar)
+    : base_(std::move(base)), options_(options), scalar_(scalar) {}
+
+Precision VariationSource::scalar(std::uint64_t campaignSeed, std::uint64_t index) const {
+  return scalarOf(scalar_, departure(campaignSeed, index));
+}
 
 Departure VariationSource::departure(std::uint64_t campaignSeed, std::uint64_t index) const {
   if (index == 0) return {};  // case 0: the user's run as given
@@ -108,10 +112,13 @@ RunRequest VariationSource::run(std::uint64_t campaignSeed, std::uint64_t index)
 }
 
 CaseSource::Shrunk VariationSource::shrink(std::uint64_t campaignSeed, std::uint64_t index, const RunRequest&,
-                                           const std::function<bool(const RunRequest&)>& fails,
-                                           std::size_t budget) const {
-  const ShrunkDeparture s = shrinkDeparture(base_, departure(campaignSeed, index), fails, budget, options_.shortestRun);
-  return {applyDeparture(base_, s.departure), s.steps, describeDeparture(base_, s.departure)};
+                                           const Fails& fails, std::size_t budget) const {
+  const ShrunkDeparture s = shrinkDeparture(
+      base_, departure(campaignSeed, index),
+      [&](const RunRequest& r, const Departure& d) { return fails(r, scalarOf(scalar_, d)); }, budget,
+      options_.shortestRun);
+  return {applyDeparture(base_, s.departure), scalarOf(scalar_, s.departure), s.steps,
+          describeDeparture(base_, s.departure, scalar_)};
 }
 
 std::string VariationSource::describe() const {
@@ -121,7 +128,8 @@ std::string VariationSource::describe() const {
   return "variations of run " + hex(h) + " keys " + shortest(o.keyPressesPer10s) + " position " + shortest(o.position) +
          " speed " + shortest(o.speed) + " angle " + shortest(o.angle) + " kick " + shortest(o.kick) + " gravity " +
          shortest(o.gravity) + " friction " + shortest(o.friction) + " model " + (o.model ? "on" : "off") +
-         " max-tick " + (o.maxTick ? "on" : "off");
+         " max-tick " + (o.maxTick ? "on" : "off") + (o.scalar ? " scalar on" : "") +
+         (scalar_ == Precision::LongDouble ? " given long-double" : "");
 }
 
 CampaignResult runCampaign(const CampaignOptions& o) {
@@ -159,8 +167,9 @@ CampaignResult runCampaign(const CampaignOptions& o) {
         o.caseStarted(index);
       }
       const RunRequest run = source.run(o.seed, index);
+      const Precision scalar = source.scalar(o.seed, index);
       std::uint64_t failed = 0;
-      const std::vector<PropertyResult> results = checkProperties(o.properties, run);
+      const std::vector<PropertyResult> results = checkProperties(o.properties, run, scalar);
       for (std::size_t k = 0; k < o.properties.size(); ++k) {
         const Property* p = o.properties[k];
         CaseOutcome c;
@@ -174,12 +183,14 @@ CampaignResult runCampaign(const CampaignOptions& o) {
         if (!r.holds) {
           ++failed;
           const CaseSource::Shrunk m = source.shrink(
-              o.seed, index, run, [&](const RunRequest& candidate) { return !checkSafely(*p, candidate).holds; },
+              o.seed, index, run,
+              [&](const RunRequest& candidate, Precision s) { return !checkSafely(*p, candidate, s).holds; },
               o.shrinkBudget);
           c.minimal = m.run;
+          c.scalar = m.scalar;
           c.shrinkSteps = m.steps;
           c.departure = m.departure;
-          const PropertyResult minimal = checkSafely(*p, m.run);
+          const PropertyResult minimal = checkSafely(*p, m.run, m.scalar);
           c.message = minimal.message;
           c.failedAt = minimal.failedAt;
         }
@@ -267,7 +278,7 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
       const RunRequest logged = c.failedAt ? runThroughTickAt(c.minimal, *c.failedAt) : c.minimal;
       try {
         replay::LogWriter log((folder / "run.gzlog").string());
-        replay::recordRun(logged, PrecisionChoice{Precision::Double, 0}, log);
+        replay::recordRun(logged, PrecisionChoice{c.scalar, 0}, log);
       } catch (const std::exception& e) {
         throw CampaignError("cannot record " + (folder / "run.gzlog").string() + ": " + e.what());
       }
@@ -276,7 +287,7 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
                                   quoted((folder / "keys.txt").string()) + " --model " +
                                   std::string(motionModelName(c.minimal.model)) + " --max-tick " +
                                   shortest(c.minimal.maxTick) + " --time " + shortest(c.minimal.duration) +
-                                  checkArguments;
+                                  (c.scalar == Precision::LongDouble ? " --precision long-double" : "") + checkArguments;
       writeFile(folder / "command.txt", command + "\n");
       const std::string departure =
           c.departure.empty() ? "" : "departure from the run given: " + c.departure + "\n";

@@ -279,7 +279,7 @@ Property expectationsProperty(std::vector<Expectation> expectations) {
   Property p;
   p.name = kExpectationsPropertyName;
   p.summary = "the expectations of the --expect file hold";
-  p.check = [expectations = std::move(expectations)](const RunRequest& run) {
+  p.check = [expectations = std::move(expectations)](const RunRequest& run, Precision) {
     std::vector<ExpectationFailure> broken;
     try {
       broken = checkExpectations(run, expectations);

@@ -397,5 +397,8 @@ InvariantRun checkInvariants(const RunRequest& request, const std::vector<Invari
 
 template class InvariantChecker<double>;
 template InvariantRun checkInvariants<double>(const RunRequest&, const std::vector<Invariant>&);
+// A campaign may vary the scalar (docs/fuzzing.md, "Fuzzing your own board").
+template class InvariantChecker<long double>;
+template InvariantRun checkInvariants<long double>(const RunRequest&, const std::vector<Invariant>&);
 
 }  // namespace gizmo::verify::fuzz

@@ -48,13 +48,17 @@ PropertyResult invariantResult(const InvariantRun& r, Invariant which) {
   return PropertyResult{true, "", d.h};
 }
 
-PropertyResult fromInvariant(const RunRequest& run, Invariant which) {
-  return invariantResult(checkInvariants<double>(run, {which}), which);
+InvariantRun invariantsIn(Precision scalar, const RunRequest& run, const std::vector<Invariant>& which) {
+  return scalar == Precision::LongDouble ? checkInvariants<long double>(run, which) : checkInvariants<double>(run, which);
 }
 
-PropertyResult noTunnelling(const RunRequest& run) { return fromInvariant(run, Invariant::NoTunnelling); }
-PropertyResult energy(const RunRequest& run) { return fromInvariant(run, Invariant::Energy); }
-PropertyResult eventQueue(const RunRequest& run) { return fromInvariant(run, Invariant::EventQueue); }
+PropertyResult fromInvariant(const RunRequest& run, Precision scalar, Invariant which) {
+  return invariantResult(invariantsIn(scalar, run, {which}), which);
+}
+
+PropertyResult noTunnelling(const RunRequest& run, Precision s) { return fromInvariant(run, s, Invariant::NoTunnelling); }
+PropertyResult energy(const RunRequest& run, Precision s) { return fromInvariant(run, s, Invariant::Energy); }
+PropertyResult eventQueue(const RunRequest& run, Precision s) { return fromInvariant(run, s, Invariant::EventQueue); }
 
 // A log file of its own in the system's temporary folder, removed when done with: the recorder
 // writes files, and cases run on many threads (and in many processes) at once.
@@ -82,8 +86,8 @@ class TemporaryLog {
   std::string path_;
 };
 
-PropertyResult replayIdentity(const RunRequest& run) {
-  const PrecisionChoice precision{Precision::Double, 0};
+PropertyResult replayIdentity(const RunRequest& run, Precision scalar) {
+  const PrecisionChoice precision{scalar == Precision::LongDouble ? Precision::LongDouble : Precision::Double, 0};
   TemporaryLog first, second;
   {
     replay::LogWriter sink(first.path());
@@ -106,7 +110,7 @@ PropertyResult replayIdentity(const RunRequest& run) {
   return PropertyResult{true, "", d.h};
 }
 
-PropertyResult roundTrip(const RunRequest& run) {
+PropertyResult roundTrip(const RunRequest& run, Precision) {
   Digest d;
   auto differs = [&](const std::string& format, const std::string& written,
                      io::ReadResult (*read)(std::string_view, const std::string&)) -> std::optional<std::string> {
@@ -272,7 +276,7 @@ bool sameDecision(const PhysicalDecision& x, const PhysicalDecision& y) {
 // (a dispersing billiard: roughly by travel/radius each time), so after enough of them the runs
 // part in their numbers, and from there they may legitimately decide differently. What must never
 // happen is a different decision from states that still agree: that is a model disagreeing.
-PropertyResult modelsAgree(const RunRequest& original) {
+PropertyResult modelsAgree(const RunRequest& original, Precision) {
   RunRequest run = withoutForces(original);
   std::vector<PhysicalDecision> decisions[2];
   const MotionModel models[2] = {MotionModel::Classic, MotionModel::Ballistic};
@@ -403,7 +407,8 @@ std::span<const Property> allProperties() {
   return all;
 }
 
-std::vector<PropertyResult> checkProperties(std::span<const Property* const> properties, const RunRequest& run) {
+std::vector<PropertyResult> checkProperties(std::span<const Property* const> properties, const RunRequest& run,
+                                            Precision scalar) {
   auto threw = [](const std::exception& e) { return PropertyResult{false, std::string("threw: ") + e.what(), 0}; };
   std::vector<Invariant> invariants;
   for (const Property* p : properties)
@@ -412,7 +417,7 @@ std::vector<PropertyResult> checkProperties(std::span<const Property* const> pro
   std::optional<PropertyResult> watchThrew;
   if (invariants.size() > 1) {
     try {
-      watched = checkInvariants<double>(run, invariants);
+      watched = invariantsIn(scalar, run, invariants);
     } catch (const std::exception& e) {
       watchThrew = threw(e);
     }
@@ -425,7 +430,7 @@ std::vector<PropertyResult> checkProperties(std::span<const Property* const> pro
       results.push_back(invariantResult(*watched, *p->invariant));
     } else {
       try {
-        results.push_back(p->check(run));
+        results.push_back(p->check(run, scalar));
       } catch (const std::exception& e) {
         results.push_back(threw(e));
       }

@@ -68,6 +68,10 @@ std::vector<Departure> eachChangeGivenBack(const Departure& d) {
     out.push_back(d);
     out.back().otherModel = false;
   }
+  if (d.otherScalar) {
+    out.push_back(d);
+    out.back().otherScalar = false;
+  }
   return out;
 }
 
@@ -76,7 +80,7 @@ std::vector<Departure> eachChangeGivenBack(const Departure& d) {
 bool Departure::empty() const {
   return added.empty() && removed.empty() && moved.empty() &&
          std::all_of(balls.begin(), balls.end(), sameBallChange) && gravityFactor == 1 && muFactor == 1 &&
-         mu2Factor == 1 && !otherModel && maxTickFactor == 1 && !duration;
+         mu2Factor == 1 && !otherModel && maxTickFactor == 1 && !otherScalar && !duration;
 }
 
 std::vector<int> connectedKeys(const BoardSpec& board) {
@@ -159,7 +163,13 @@ Departure randomDeparture(const RunRequest& base, std::uint64_t seed, const Vari
   }
   if (o.model && r.chance(4)) d.otherModel = true;
   if (o.maxTick && r.chance(4)) d.maxTickFactor = r.chance(2) ? 0.5 : 2;
+  if (o.scalar && r.chance(4)) d.otherScalar = true;  // drawn last: campaigns without it draw as before
   return d;
+}
+
+Precision scalarOf(Precision base, const Departure& d) {
+  if (!d.otherScalar) return base;
+  return base == Precision::LongDouble ? Precision::Double : Precision::LongDouble;
 }
 
 RunRequest applyDeparture(const RunRequest& base, const Departure& d) {
@@ -260,8 +270,8 @@ std::vector<Departure> departuresCloser(const RunRequest& base, const Departure&
 }
 
 ShrunkDeparture shrinkDeparture(const RunRequest& base, const Departure& failing,
-                                const std::function<bool(const RunRequest&)>& fails, std::size_t budget,
-                                double shortestRun) {
+                                const std::function<bool(const RunRequest&, const Departure&)>& fails,
+                                std::size_t budget, double shortestRun) {
   ShrunkDeparture s{failing, 0, 0};
   const std::size_t problems = checkBoardSpec(base.board).size();
   for (bool progress = true; progress && s.tries < budget;) {
@@ -273,7 +283,7 @@ ShrunkDeparture shrinkDeparture(const RunRequest& base, const Departure& failing
       const RunRequest run = applyDeparture(base, candidate);
       if (checkBoardSpec(run.board).size() > problems) continue;
       ++s.tries;
-      if (fails(run)) {
+      if (fails(run, candidate)) {
         s.departure = std::move(candidate);
         ++s.steps;
         progress = true;
@@ -284,7 +294,7 @@ ShrunkDeparture shrinkDeparture(const RunRequest& base, const Departure& failing
   return s;
 }
 
-std::string describeDeparture(const RunRequest& base, const Departure& d) {
+std::string describeDeparture(const RunRequest& base, const Departure& d, Precision baseScalar) {
   std::vector<std::string> parts;
   for (const AddedPress& p : d.added) {
     const std::string key = "key " + std::to_string(p.key);
@@ -335,6 +345,9 @@ std::string describeDeparture(const RunRequest& base, const Departure& d) {
                     std::string(motionModelName(base.model)) + " given)");
   if (d.maxTickFactor != 1)
     parts.push_back("maximum tick " + seconds(base.maxTick * d.maxTickFactor) + " (" + seconds(base.maxTick) + " given)");
+  if (d.otherScalar)
+    parts.push_back(scalarOf(baseScalar, d) == Precision::LongDouble ? "in long double (double given)"
+                                                                      : "in double (long double given)");
   if (d.duration) parts.push_back("the run cut to " + seconds(*d.duration) + " (" + seconds(base.duration) + " given)");
   if (parts.empty()) return "none: the board as given";
   std::string s;

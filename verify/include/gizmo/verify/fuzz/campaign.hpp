@@ -25,13 +25,18 @@ class CaseSource {
  public:
   virtual ~CaseSource() = default;
   virtual RunRequest run(std::uint64_t campaignSeed, std::uint64_t index) const = 0;
+  // The scalar the case's properties run in: Double, or LongDouble for a variation that asks.
+  virtual Precision scalar(std::uint64_t, std::uint64_t) const { return Precision::Double; }
+  // Whether a run in a scalar still fails.
+  using Fails = std::function<bool(const RunRequest&, Precision)>;
   struct Shrunk {
     RunRequest run;
+    Precision scalar = Precision::Double;
     std::size_t steps = 0;
     std::string departure;  // variations: the smallest departure from the user's run, in words
   };
-  virtual Shrunk shrink(std::uint64_t campaignSeed, std::uint64_t index, const RunRequest& failing,
-                        const std::function<bool(const RunRequest&)>& fails, std::size_t budget) const = 0;
+  virtual Shrunk shrink(std::uint64_t campaignSeed, std::uint64_t index, const RunRequest& failing, const Fails& fails,
+                        std::size_t budget) const = 0;
   // What results.txt says the cases are ("generated", or "variations of board HASH, …"): shards of
   // campaigns of different sources are never merged.
   virtual std::string describe() const = 0;
@@ -41,10 +46,12 @@ class CaseSource {
 // seed. `describe` names the base by a hash of everything it is, and the options.
 class VariationSource final : public CaseSource {
  public:
-  VariationSource(RunRequest base, VariationOptions options);
+  // `scalar`: the base run's, Double or LongDouble (a log recorded in long double).
+  VariationSource(RunRequest base, VariationOptions options, Precision scalar = Precision::Double);
   RunRequest run(std::uint64_t campaignSeed, std::uint64_t index) const override;
-  Shrunk shrink(std::uint64_t campaignSeed, std::uint64_t index, const RunRequest& failing,
-                const std::function<bool(const RunRequest&)>& fails, std::size_t budget) const override;
+  Precision scalar(std::uint64_t campaignSeed, std::uint64_t index) const override;
+  Shrunk shrink(std::uint64_t campaignSeed, std::uint64_t index, const RunRequest& failing, const Fails& fails,
+                std::size_t budget) const override;
   std::string describe() const override;
   Departure departure(std::uint64_t campaignSeed, std::uint64_t index) const;
   const RunRequest& base() const { return base_; }
@@ -52,6 +59,7 @@ class VariationSource final : public CaseSource {
  private:
   RunRequest base_;
   VariationOptions options_;
+  Precision scalar_;
 };
 
 struct CampaignOptions {
@@ -83,6 +91,7 @@ struct CaseOutcome {
   // When it does not hold:
   std::string message;     // for the minimal run
   RunRequest minimal;
+  Precision scalar = Precision::Double;  // the minimal run's
   std::string departure;   // a variation's: how the minimal run departs from the user's, in words
   std::size_t shrinkSteps = 0;
   std::optional<double> failedAt = std::nullopt;  // when the minimal run failed, where the property says

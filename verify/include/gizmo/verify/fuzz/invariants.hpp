@@ -123,5 +123,7 @@ InvariantRun checkInvariants(const RunRequest& request, const std::vector<Invari
 
 extern template class InvariantChecker<double>;
 extern template InvariantRun checkInvariants<double>(const RunRequest&, const std::vector<Invariant>&);
+extern template class InvariantChecker<long double>;
+extern template InvariantRun checkInvariants<long double>(const RunRequest&, const std::vector<Invariant>&);
 
 }  // namespace gizmo::verify::fuzz

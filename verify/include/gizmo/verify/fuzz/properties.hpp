@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gizmo/core/math/precision.hpp"
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/verify/fuzz/invariants.hpp"
 
@@ -27,8 +28,10 @@ struct Property {
   std::string_view name;
   std::string_view summary;
   // A function rather than a pointer, so that a property may hold what it checks against (the
-  // user's expectations: expectationsProperty in expectations.hpp).
-  std::function<PropertyResult(const RunRequest& run)> check;
+  // user's expectations: expectationsProperty in expectations.hpp). `scalar` is Double or
+  // LongDouble: the invariants and replay-identity run in it; round-trip has no scalar, and
+  // models-agree and the expectations judge double runs (their tolerances are double's).
+  std::function<PropertyResult(const RunRequest& run, Precision scalar)> check;
   std::optional<Invariant> invariant = std::nullopt;  // the invariant it checks, for those that are one
 };
 
@@ -43,7 +46,8 @@ std::string propertyNames();
 // The invariants among them are checked together, in one run under one checker: the checker only
 // watches and keeps each invariant's first violation, so each gets the result it would get alone,
 // for one simulation instead of one each (a campaign's cases spend most of their time simulating).
-std::vector<PropertyResult> checkProperties(std::span<const Property* const> properties, const RunRequest& run);
+std::vector<PropertyResult> checkProperties(std::span<const Property* const> properties, const RunRequest& run,
+                                            Precision scalar = Precision::Double);
 
 // The run that models-agree compares: the same board with gravity 0 and friction 0.
 RunRequest withoutForces(const RunRequest& run);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "gizmo/core/math/precision.hpp"
 #include "gizmo/core/run/run.hpp"
 
 namespace gizmo::verify::fuzz {
@@ -29,6 +30,10 @@ struct VariationOptions {
   double friction = 50;         // --vary-friction: % each friction constant may change
   bool model = true;            // --vary-model: one case in four runs the other motion model
   bool maxTick = true;          // --vary-max-tick: one case in four halves or doubles the maximum tick
+  // --vary-scalar: one case in four runs in the other of double and long double. Off unless asked:
+  // long double is a different format on each kind of machine (x87's 80 bits, binary128, or double
+  // itself), so such a campaign's digest holds only among machines of one kind.
+  bool scalar = false;
   // Shrinking cuts no run shorter than this: a tick or two, or the time the user's expectations
   // need to be decided (a run cut before it would break them by ending).
   double shortestRun = 0.05;
@@ -59,6 +64,7 @@ struct Departure {
   double gravityFactor = 1, muFactor = 1, mu2Factor = 1;
   bool otherModel = false;
   double maxTickFactor = 1;  // 1, 1/2 or 2
+  bool otherScalar = false;  // long double for a double run, and the other way round
   std::optional<double> duration;  // a shorter run (only shrinking sets it)
 
   bool empty() const;
@@ -68,6 +74,8 @@ struct Departure {
 Departure randomDeparture(const RunRequest& base, std::uint64_t seed, const VariationOptions& options);
 // The run a departure makes of the base: keys merged in time order, balls moved and relaunched.
 RunRequest applyDeparture(const RunRequest& base, const Departure& d);
+// The scalar a departure's run is checked in, from the base's (Double or LongDouble).
+Precision scalarOf(Precision base, const Departure& d);
 
 // Departures strictly closer to the base than `d`, boldest first: every added press gone, half of
 // them, each one; each removed or moved event given back; each ball's change undone, then halved;
@@ -80,14 +88,15 @@ struct ShrunkDeparture {
 };
 // Greedy, as minimise() in run_shrinker.hpp: the first closer departure whose run still fails,
 // again from it, until none does or `fails` has been called `budget` times.
+// `fails` is given the candidate's run and the candidate itself (whose scalar it may need).
 ShrunkDeparture shrinkDeparture(const RunRequest& base, const Departure& failing,
-                                const std::function<bool(const RunRequest&)>& fails, std::size_t budget,
-                                double shortestRun);
+                                const std::function<bool(const RunRequest&, const Departure&)>& fails,
+                                std::size_t budget, double shortestRun);
 
 // The departure in words a player reads: "key 32 down at 1.25 s, up at 1.4 s; B launched 0.8 %
 // faster, turned 2.1° anticlockwise; gravity 27.5 (25 on the board)". "none: the board as given"
 // for an empty one.
-std::string describeDeparture(const RunRequest& base, const Departure& d);
+std::string describeDeparture(const RunRequest& base, const Departure& d, Precision baseScalar = Precision::Double);
 
 // The keys a board connects to its gizmos, each once, in increasing order.
 std::vector<int> connectedKeys(const BoardSpec& board);
