@@ -2,26 +2,12 @@
 #include "render_board_drawing.hpp"
 
 #include "gizmo/core/geometry/shapes.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 
 namespace gizmo::cli {
 
-const char* drawingTypeName(GizmoType type) {
-  switch (type) {
-    case GizmoType::Square: return "square";
-    case GizmoType::Circle: return "circle";
-    case GizmoType::Triangle: return "triangle";
-    case GizmoType::LeftFlipper: return "left-flipper";
-    case GizmoType::RightFlipper: return "right-flipper";
-    case GizmoType::Absorber: return "absorber";
-    case GizmoType::Booster: return "booster";
-    case GizmoType::Teleporter: return "teleporter";
-    case GizmoType::Sink: return "sink";
-    case GizmoType::Portal: return "portal";
-    case GizmoType::Spinner: return "spinner";
-    case GizmoType::Spawner: return "spawner";
-  }
-  return "square";
-}
+// Each class is a literal of kGizmoKinds, so its view ends in a terminating null.
+const char* drawingTypeName(GizmoType type) { return gizmoKind(type).drawing.data(); }
 
 namespace {
 

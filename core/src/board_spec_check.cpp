@@ -23,26 +23,12 @@
 #include "exact_dyadic.hpp"
 #include "gizmo/core/decimal_text.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 
 namespace gizmo {
 
-const char* gizmoTypeWord(GizmoType type) {
-  switch (type) {
-    case GizmoType::Square: return "square";
-    case GizmoType::Circle: return "circle";
-    case GizmoType::Triangle: return "triangle";
-    case GizmoType::LeftFlipper: return "left flipper";
-    case GizmoType::RightFlipper: return "right flipper";
-    case GizmoType::Absorber: return "absorber";
-    case GizmoType::Booster: return "booster";
-    case GizmoType::Teleporter: return "teleporter";
-    case GizmoType::Sink: return "sink";
-    case GizmoType::Portal: return "portal";
-    case GizmoType::Spinner: return "spinner";
-    case GizmoType::Spawner: return "spawner";
-  }
-  return "gizmo";
-}
+// Each word is a literal of kGizmoKinds, so its view ends in a terminating null.
+const char* gizmoTypeWord(GizmoType type) { return gizmoKind(type).word.data(); }
 
 namespace {
 

@@ -1,6 +1,7 @@
 // Canonical board files. Numbers: the shortest decimal that reads back to the same double.
 #include "gizmo/io/board_writer.hpp"
 
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "parse_util.hpp"
 
 namespace gizmo::io {
@@ -25,42 +26,6 @@ std::string xmlEscaped(const std::string& s) {
   return out;
 }
 
-const char* xmlElement(GizmoType t) {
-  switch (t) {
-    case GizmoType::Square: return "squareBumper";
-    case GizmoType::Circle: return "circleBumper";
-    case GizmoType::Triangle: return "triangleBumper";
-    case GizmoType::LeftFlipper: return "leftFlipper";
-    case GizmoType::RightFlipper: return "rightFlipper";
-    case GizmoType::Absorber: return "absorber";
-    case GizmoType::Booster: return "booster";
-    case GizmoType::Teleporter: return "teleporter";
-    case GizmoType::Sink: return "sink";
-    case GizmoType::Portal: return "portal";
-    case GizmoType::Spinner: return "spinner";
-    case GizmoType::Spawner: return "spawner";
-  }
-  return "squareBumper";
-}
-
-const char* textCommand(GizmoType t) {
-  switch (t) {
-    case GizmoType::Square: return "Square";
-    case GizmoType::Circle: return "Circle";
-    case GizmoType::Triangle: return "Triangle";
-    case GizmoType::LeftFlipper: return "LeftFlipper";
-    case GizmoType::RightFlipper: return "RightFlipper";
-    case GizmoType::Absorber: return "Absorber";
-    case GizmoType::Booster: return "Booster";
-    case GizmoType::Teleporter: return "Teleporter";
-    case GizmoType::Sink: return "Sink";
-    case GizmoType::Portal: return "Portal";
-    case GizmoType::Spinner: return "Spinner";
-    case GizmoType::Spawner: return "Spawner";
-  }
-  return "Square";
-}
-
 const char* direction(KeyDirection d) { return d == KeyDirection::Down ? "down" : "up"; }
 
 std::string attr(const char* name, const std::string& value) {
@@ -79,7 +44,7 @@ std::string writeXmlBoard(const BoardSpec& board) {
   }
   out += "  <gizmos>\n";
   for (const GizmoSpec& g : board.gizmos) {
-    out += std::string("    <") + xmlElement(g.type) + attr("name", xmlEscaped(g.name)) +
+    out += std::string("    <") + gizmoKind(g.type).xmlElement.data() + attr("name", xmlEscaped(g.name)) +
            attr("x", std::to_string(g.x)) + attr("y", std::to_string(g.y));
     switch (g.type) {
       case GizmoType::Absorber:
@@ -120,7 +85,7 @@ std::string writeTextBoard(const BoardSpec& board) {
   out += "Gravity " + shortest(board.gravity) + "\n";
   out += "Friction " + shortest(board.mu) + " " + shortest(board.mu2) + "\n";
   for (const GizmoSpec& g : board.gizmos) {
-    out += std::string(textCommand(g.type)) + " " + g.name + " " + std::to_string(g.x) + " " + std::to_string(g.y);
+    out += std::string(gizmoKind(g.type).textCommand) + " " + g.name + " " + std::to_string(g.x) + " " + std::to_string(g.y);
     if (g.type == GizmoType::Absorber)
       out += " " + std::to_string(static_cast<long long>(g.x) + g.width) + " " +
              std::to_string(static_cast<long long>(g.y) + g.height);

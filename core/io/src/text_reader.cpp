@@ -2,6 +2,7 @@
 #include "gizmo/io/text_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <map>
@@ -11,6 +12,7 @@
 
 #include "board_repair.hpp"
 #include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "key_names.hpp"
 #include "parse_util.hpp"
 #include "foreign_format.hpp"
@@ -31,20 +33,8 @@ struct CommandInfo {
   std::string_view usage;
 };
 
-constexpr CommandInfo kCommands[] = {
-    {"Square", Cmd::Gizmo, GizmoType::Square, 4, "Square NAME X Y"},
-    {"Circle", Cmd::Gizmo, GizmoType::Circle, 4, "Circle NAME X Y"},
-    {"Triangle", Cmd::Gizmo, GizmoType::Triangle, 4, "Triangle NAME X Y"},
-    {"LeftFlipper", Cmd::Gizmo, GizmoType::LeftFlipper, 4, "LeftFlipper NAME X Y"},
-    {"RightFlipper", Cmd::Gizmo, GizmoType::RightFlipper, 4, "RightFlipper NAME X Y"},
-    {"Absorber", Cmd::Absorber, GizmoType::Absorber, 6, "Absorber NAME X1 Y1 X2 Y2"},
-    // Additions, spelled as the programs that invented them spell them (docs/board-files.md §2).
-    {"Booster", Cmd::Gizmo, GizmoType::Booster, 4, "Booster NAME X Y"},
-    {"Teleporter", Cmd::Gizmo, GizmoType::Teleporter, 4, "Teleporter NAME X Y"},
-    {"Sink", Cmd::Gizmo, GizmoType::Sink, 4, "Sink NAME X Y"},
-    {"Portal", Cmd::Gizmo, GizmoType::Portal, 6, "Portal NAME X Y EXITX EXITY"},
-    {"Spinner", Cmd::Gizmo, GizmoType::Spinner, 4, "Spinner NAME X Y"},
-    {"Spawner", Cmd::Gizmo, GizmoType::Spawner, 4, "Spawner NAME X Y"},
+// The gizmos' commands come from their kinds (gizmo_kinds.hpp); the others are the format's own.
+constexpr CommandInfo kOtherCommands[] = {
     {"Ball", Cmd::Ball, GizmoType::Square, 6, "Ball NAME X Y VX VY"},
     {"Rotate", Cmd::Rotate, GizmoType::Square, 2, "Rotate NAME"},
     {"Delete", Cmd::Delete, GizmoType::Square, 2, "Delete NAME"},
@@ -54,6 +44,16 @@ constexpr CommandInfo kCommands[] = {
     {"Gravity", Cmd::Gravity, GizmoType::Square, 2, "Gravity G"},
     {"Friction", Cmd::Friction, GizmoType::Square, 3, "Friction MU MU2"},
 };
+
+constexpr auto kCommands = [] {
+  std::array<CommandInfo, std::size(kGizmoKinds) + std::size(kOtherCommands)> all{};
+  std::size_t n = 0;
+  for (const GizmoKindInfo& k : kGizmoKinds)
+    all[n++] = {k.textCommand, k.type == GizmoType::Absorber ? Cmd::Absorber : Cmd::Gizmo, k.type, textTokens(k),
+                k.textUsage};
+  for (const CommandInfo& c : kOtherCommands) all[n++] = c;
+  return all;
+}();
 
 const CommandInfo* findCommand(std::string_view word) {
   const std::string lower = toLowerAscii(word);

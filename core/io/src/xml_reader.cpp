@@ -11,6 +11,7 @@
 #include <pugixml.hpp>
 
 #include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "parse_util.hpp"
 
 namespace gizmo::io {
@@ -57,19 +58,6 @@ struct Attr {
   SourcePos at;
 };
 
-struct GizmoElement {
-  std::string_view element;
-  GizmoType type;
-};
-constexpr GizmoElement kGizmoElements[] = {
-    {"squareBumper", GizmoType::Square},     {"circleBumper", GizmoType::Circle},
-    {"triangleBumper", GizmoType::Triangle}, {"leftFlipper", GizmoType::LeftFlipper},
-    {"rightFlipper", GizmoType::RightFlipper}, {"absorber", GizmoType::Absorber},
-    {"booster", GizmoType::Booster},       {"teleporter", GizmoType::Teleporter},
-    {"sink", GizmoType::Sink},             {"portal", GizmoType::Portal},
-    {"spinner", GizmoType::Spinner},
-    {"spawner", GizmoType::Spawner},
-};
 
 // " (did you mean <squareBumper>?)" when name differs from one of known only in case.
 std::string caseHint(std::string_view name, const std::vector<std::string_view>& known) {
@@ -81,11 +69,11 @@ std::string caseHint(std::string_view name, const std::vector<std::string_view>&
 
 std::vector<std::string_view> gizmoElementNames() {
   std::vector<std::string_view> names;
-  for (const GizmoElement& k : kGizmoElements) names.push_back(k.element);
+  for (const GizmoKindInfo& k : kGizmoKinds) names.push_back(k.xmlElement);
   return names;
 }
 
-// "squareBumper, circleBumper, ... and booster": every element of kGizmoElements.
+// "squareBumper, circleBumper, ... and spawner": every kind's element (gizmo_kinds.hpp).
 std::string gizmoElementList() {
   const std::vector<std::string_view> names = gizmoElementNames();
   std::string out;
@@ -321,9 +309,7 @@ class XmlReader {
         continue;
       }
       if (c.type() != pugi::node_element) continue;
-      const GizmoElement* kind = nullptr;
-      for (const GizmoElement& k : kGizmoElements)
-        if (k.element == c.name()) kind = &k;
+      const GizmoKindInfo* kind = gizmoKindByXmlElement(c.name());
       if (!kind) {
         rep_.error(elementAt(c), "unknown gizmo element " + tag(c.name()) + "; the gizmos are " + gizmoElementList() +
                                      caseHint(c.name(), gizmoElementNames()));
