@@ -5,6 +5,7 @@ namespace gizmo::cli {
 extern const char* const kPlayerHtml;
 extern const char* const kPlayerCss;
 extern const char* const kPlayerJs;
+extern const char* const kRunDataJs;  // the run's decoding and its state at a moment (player.js's)
 extern const char* const kPlayHtml;
 extern const char* const kPlayCss;
 extern const char* const kPlayJs;

@@ -213,7 +213,7 @@ std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& 
   replaceMarker(page, "{{title}}", escapeHtml(title));
   replaceMarker(page, "{{style}}", kPlayerCss);
   replaceMarker(page, "{{data}}", json);
-  replaceMarker(page, "{{script}}", std::string(kBoardViewJs) + kPlayerJs);
+  replaceMarker(page, "{{script}}", std::string(kBoardViewJs) + kRunDataJs + kPlayerJs);
   return page;
 }
 

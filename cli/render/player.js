@@ -1,6 +1,7 @@
 // The replay player. It reads the run data that `gizmo render` put into the page (arrays as
-// base64, docs/render.md), and draws the board at any moment: each ball on its true path (the
-// pieces p + v·τ + ½·a·τ² the log's states anchor), each flipper on its swing. The page fetches
+// base64, docs/render.md; decoded by run_data.js, which also gives the state at a moment), and
+// draws the board at any moment: each ball on its true path (the pieces p + v·τ + ½·a·τ² the
+// log's states anchor), each flipper on its swing. The page fetches
 // nothing. A page opened as FILE#event=N shows the board after N events and writes what it drew
 // into #probe, which the browser test compares with `gizmo replay --event N`. Another engine's
 // path (Box2D's, from a path file) can be laid over the run: a polyline through its step positions.
@@ -13,56 +14,10 @@
   const names = data.names;
   const board = data.board;
 
-  function bytesOf(text) {
-    const raw = atob(text);
-    const out = new Uint8Array(raw.length);
-    for (let i = 0; i < raw.length; i++) out[i] = raw.charCodeAt(i);
-    return out;
-  }
-  // Each array has its own buffer, so that every typed view is aligned.
-  function arrayOf(Type, text) {
-    const b = bytesOf(text);
-    return new Type(b.buffer, 0, b.length / Type.BYTES_PER_ELEMENT);
-  }
-
-  function loadRun(r) {
-    const ev = r.events;
-    const run = {
-      label: r.label, model: r.model, precision: r.precision, duration: r.duration,
-      end: r.end_time, tolerance: r.tolerance, truncation: r.truncation, gizmoNames: r.gizmo_names,
-      count: ev.count,
-      time: arrayOf(Float64Array, ev.time), kind: arrayOf(Uint8Array, ev.kind),
-      a: arrayOf(Int16Array, ev.a), b: arrayOf(Int16Array, ev.b), feature: arrayOf(Int16Array, ev.feature),
-      accelerations: r.accelerations,
-      balls: r.balls.map((b) => ({
-        name: b.name, id: b.id, count: b.pieces,
-        event: arrayOf(Int32Array, b.event), p: arrayOf(Float64Array, b.p), v: arrayOf(Float64Array, b.v),
-        a: arrayOf(Uint16Array, b.a), logged: arrayOf(Uint8Array, b.logged),
-      })),
-      flippers: new Map(),
-      notes: {
-        patterns: r.notes.patterns,
-        index: arrayOf(r.notes.index_bytes === 2 ? Uint16Array : Uint32Array, r.notes.index),
-      },
-    };
-    for (const f of r.flippers) {
-      run.flippers.set(f.id, {
-        count: f.anchors, event: arrayOf(Int32Array, f.event),
-        s0: arrayOf(Float32Array, f.s0), direction: arrayOf(Int8Array, f.direction),
-      });
-    }
-    return run;
-  }
+  const { loadRun, loadPath, countAtMost, countBelow, pathBallAt, eventsBy, ballAt, flipperSwing } = RunData;
   const runs = data.runs.map(loadRun);
   const main = runs[0];
-  // Another engine's path: per ball the kept sample times and positions (render_path_overlay.hpp).
-  const path = data.path ? {
-    label: data.path.label, engine: data.path.engine, dt: data.path.dt, tolerance: data.path.tolerance,
-    threshold: data.path.threshold, parting: data.path.parting,
-    balls: data.path.balls.map((b) => ({
-      name: b.name, count: b.count, t: arrayOf(Float64Array, b.t), p: arrayOf(Float64Array, b.p),
-    })),
-  } : null;
+  const path = data.path ? loadPath(data.path) : null;
   // Where the run parts from what it is compared with, for the timelines: a second log (the first
   // differing decision) or a path (the first step further apart than its threshold).
   const partings = [];
@@ -74,73 +29,6 @@
   if (data.path) data.path = null;
   document.getElementById("run-data").remove();
   const endTime = Math.max(...runs.map((r) => r.end), 1e-9);
-
-  // ---- Searching sorted arrays ----------------------------------------------------------------
-  // The number of entries of a[0..n) that are <= value.
-  function countAtMost(a, n, value) {
-    let lo = 0, hi = n;
-    while (lo < hi) {
-      const mid = (lo + hi) >>> 1;
-      if (a[mid] <= value) lo = mid + 1; else hi = mid;
-    }
-    return lo;
-  }
-  // The number of entries of a[0..n) that are < value.
-  function countBelow(a, n, value) {
-    let lo = 0, hi = n;
-    while (lo < hi) {
-      const mid = (lo + hi) >>> 1;
-      if (a[mid] < value) lo = mid + 1; else hi = mid;
-    }
-    return lo;
-  }
-
-  // ---- The state at a moment ------------------------------------------------------------------
-  // A path's ball at time t: on the straight line between the samples around t, as the engine
-  // moved it over that step (held at the ends before the first and after the last).
-  function pathBallAt(ball, t) {
-    const i = countAtMost(ball.t, ball.count, t) - 1;
-    if (i < 0) return { x: ball.p[0], y: ball.p[1] };
-    if (i >= ball.count - 1) return { x: ball.p[2 * i], y: ball.p[2 * i + 1] };
-    const f = (t - ball.t[i]) / (ball.t[i + 1] - ball.t[i]);
-    return {
-      x: ball.p[2 * i] + f * (ball.p[2 * i + 2] - ball.p[2 * i]),
-      y: ball.p[2 * i + 1] + f * (ball.p[2 * i + 3] - ball.p[2 * i + 1]),
-    };
-  }
-
-  // A moment is a time and the number of events run by then; the number matters when several
-  // events share one time (the state after the first of them is not the state after the last).
-  function eventsBy(run, t) { return countAtMost(run.time, run.count, t); }
-
-  function pieceTime(run, ball, i) { const e = ball.event[i]; return e < 0 ? 0 : run.time[e]; }
-
-  // The ball's position in the simulator's own operations (Trajectory::positionAt), so that a
-  // double run is drawn at exactly the positions it computed. Null before a spawned ball exists:
-  // its first piece starts with the event that spawned it.
-  function ballAt(run, ball, t, done) {
-    if (ball.event[0] >= done) return null;
-    const i = Math.max(0, countAtMost(ball.event, ball.count, done - 1) - 1);
-    const acc = run.accelerations[ball.a[i]];
-    const tau = t - pieceTime(run, ball, i);
-    const half = 0.5;
-    const h = half * tau * tau;
-    return {
-      x: ball.p[2 * i] + tau * ball.v[2 * i] + h * acc[0],
-      y: ball.p[2 * i + 1] + tau * ball.v[2 * i + 1] + h * acc[1],
-      vx: ball.v[2 * i] + tau * acc[0], vy: ball.v[2 * i + 1] + tau * acc[1],
-      piece: i,
-    };
-  }
-
-  // A flipper's swing progress at a moment, from its anchors.
-  function flipperSwing(run, id, t, done) {
-    const f = run.flippers.get(id);
-    if (!f) return 0;
-    const j = Math.max(0, countAtMost(f.event, f.count, done - 1) - 1);
-    const t0 = f.event[j] < 0 ? 0 : run.time[f.event[j]];
-    return f.s0[j] + f.direction[j] * (t - t0);
-  }
 
   // ---- Text -----------------------------------------------------------------------------------
   const hexFloat = BoardView.hexFloat;
