@@ -263,6 +263,10 @@ bool baseRun(const FuzzOptions& o, RunRequest& base, Precision& scalar, int& cod
     return false;
   }
   base = log->request;
+  // A log cut off still holds the whole run in its header, which is what is varied: say so.
+  if (!log->reader.truncation().empty())
+    std::cerr << "gizmo fuzz: " << o.board << ": " << log->reader.truncation()
+              << "; its header holds the whole run given, which is what the campaign varies\n";
   const std::optional<PrecisionChoice> given = parsePrecision(o.run.precision);
   if (o.precisionGiven && !given) {
     std::cerr << "gizmo fuzz: unknown precision '" << o.run.precision << "' (double or long-double)\n";
