@@ -68,9 +68,7 @@ nlohmann::ordered_json campaignJson(const fz::CampaignResult& r) {
   j["failures"] = fz::failureCount(r);
   j["complete"] = r.complete;
   j["summary"] = fz::summaryLine(r);
-  const std::string line = fz::summaryLine(r), key = "digest ";
-  const std::size_t at = line.find(key);
-  j["digest"] = at == std::string::npos ? "" : line.substr(at + key.size(), 16);
+  j["digest"] = fz::campaignDigest(r);
   nlohmann::ordered_json failed = nlohmann::ordered_json::array();
   for (const fz::CaseOutcome& c : r.outcomes) {
     if (c.holds) continue;
@@ -98,12 +96,11 @@ bool fuzzScalar(const PrecisionChoice& p, const std::string& what, Precision& sc
   return true;
 }
 
-// --check: the properties on one run read from files, then the user's expectations about it (a
-// run as long as the longest time they allow). A malformed expectation file is refused before
-// anything is checked.
-int checkOne(const FuzzOptions& o, std::vector<const fz::Property*> properties) {
-  // `--property expectations` (a failure folder's command) checks the expectations alone.
-  std::erase_if(properties, [](const fz::Property* p) { return p == nullptr; });
+// --check: the properties on one run read from files (none for `--property expectations`, a
+// failure folder's command), then the user's expectations about it (a run as long as the longest
+// time they allow).
+int checkOne(const FuzzOptions& o, const std::vector<const fz::Property*>& properties,
+             const std::vector<fz::Expectation>& expectations) {
   CheckedRun run;
   int code = kExitOk;
   RunOptions options = o.run;
@@ -111,13 +108,6 @@ int checkOne(const FuzzOptions& o, std::vector<const fz::Property*> properties) 
   if (!checkRun(options, "fuzz", run, code)) return code;
   Precision scalar = Precision::Double;
   if (!fuzzScalar(run.precision, "--precision", scalar)) return kExitBadInput;
-  std::vector<fz::Expectation> expectations;
-  try {
-    if (!o.expect.empty()) expectations = fz::readExpectationFile(o.expect);
-  } catch (const fz::ExpectationError& e) {
-    std::cerr << "gizmo fuzz: " << e.what() << '\n';
-    return kExitBadInput;
-  }
   std::vector<fz::ExpectationFailure> broken;
   try {
     if (!expectations.empty()) broken = fz::checkExpectations(run.request, expectations);
@@ -169,9 +159,9 @@ int mergeResults(const FuzzOptions& o) {
 }
 
 // Runs a campaign (generated boards, or variations when c.source is set) with the command's
-// options, writes its folder, prints its summary, failures or JSON. `checkArguments` goes on the
-// end of each failure's command (the expectation file a failure of `expectations` needs).
-int runCampaignAndReport(const FuzzOptions& o, fz::CampaignOptions& c, const std::string& checkArguments) {
+// options, writes its folder, prints its summary, failures or JSON. Each failure's command checks
+// the --expect file too, when there is one.
+int runCampaignAndReport(const FuzzOptions& o, fz::CampaignOptions& c) {
   c.count = o.count;
   c.seed = o.seed;
   c.jobs = o.jobs;
@@ -224,7 +214,7 @@ int runCampaignAndReport(const FuzzOptions& o, fz::CampaignOptions& c, const std
   if (tty) std::cerr << '\n';
   if (!o.out.empty()) {
     try {
-      fz::writeCampaign(result, o.out, "gizmo", checkArguments);
+      fz::writeCampaign(result, o.out, "gizmo", o.expect);
     } catch (const fz::CampaignError& e) {
       std::cerr << "gizmo fuzz: " << e.what() << '\n';
       return kExitBadInput;
@@ -239,68 +229,50 @@ int runCampaignAndReport(const FuzzOptions& o, fz::CampaignOptions& c, const std
   return fz::failureCount(result) == 0 ? kExitOk : kExitCheckFailed;
 }
 
-// The run that `gizmo fuzz BOARD` varies: a board file read as `gizmo run` reads it (warnings
-// included, --strict refusing them), or a replay log's board, model, tick, duration and key input;
-// --keys, --model, --max-tick and --time given on the command line take their place.
+// The run that `gizmo fuzz BOARD` varies, and its scalar: a board file read as `gizmo run` reads
+// it (warnings included, --strict refusing them), or a replay log's board, model, tick, duration,
+// key input and scalar, each replaced by the option given on the command line. A run in another
+// scalar than double or long double (a float or MPFR log) is refused rather than varied in double.
 bool baseRun(const FuzzOptions& o, RunRequest& base, Precision& scalar, int& code) {
+  code = kExitBadInput;
+  PrecisionChoice precision;
+  std::string precisionFrom = "--precision";
   if (!isLogFile(o.board)) {
     CheckedRun run;
     RunOptions options = o.run;
     options.board = o.board;
     if (!checkRun(options, "fuzz", run, code)) return false;
     base = run.request;
-    if (!fuzzScalar(run.precision, "--precision", scalar)) {
-      code = kExitBadInput;
+    precision = run.precision;
+  } else {
+    CheckedOptions given;
+    if (!checkRunOptions(o.run, "fuzz", given)) return false;
+    std::optional<replay::OpenedLog> log = openLogFor("fuzz", o.board, code);
+    if (!log) return false;
+    if (o.run.strict && !log->header.boardWarnings.empty()) {
+      std::cerr << "gizmo fuzz: " << o.board << ": --strict refuses a run of a board read leniently\n";
       return false;
     }
-    return true;
-  }
-  std::optional<replay::OpenedLog> log = openLogFor("fuzz", o.board, code);
-  if (!log) return false;
-  if (o.run.strict && !log->header.boardWarnings.empty()) {
-    std::cerr << "gizmo fuzz: " << o.board << ": --strict refuses a run of a board read leniently\n";
-    code = kExitBadInput;
-    return false;
-  }
-  base = log->request;
-  // A log cut off still holds the whole run in its header, which is what is varied: say so.
-  if (!log->reader.truncation().empty())
-    std::cerr << "gizmo fuzz: " << o.board << ": " << log->reader.truncation()
-              << "; its header holds the whole run given, which is what the campaign varies\n";
-  const std::optional<PrecisionChoice> given = parsePrecision(o.run.precision);
-  if (o.precisionGiven && !given) {
-    std::cerr << "gizmo fuzz: unknown precision '" << o.run.precision << "' (double or long-double)\n";
-    code = kExitBadInput;
-    return false;
-  }
-  // A log recorded in another scalar (float, mpfr) is refused rather than varied in double unsaid.
-  if (!fuzzScalar(o.precisionGiven ? *given : log->precision, o.precisionGiven ? std::string("--precision") : o.board,
-                  scalar)) {
-    code = kExitBadInput;
-    return false;
-  }
-  try {
-    if (o.keysGiven) base.keys = loadKeys(o.run.keys);
-  } catch (const std::exception& e) {
-    std::cerr << "gizmo fuzz: " << e.what() << '\n';
-    code = kExitBadInput;
-    return false;
-  }
-  if (o.modelGiven) {
-    if (o.run.model != "ballistic" && o.run.model != "classic") {
-      std::cerr << "gizmo fuzz: --model must be ballistic or classic, not '" << o.run.model << "'\n";
-      code = kExitBadInput;
+    // A log cut off still holds the whole run in its header, which is what is varied: say so.
+    if (!log->reader.truncation().empty())
+      std::cerr << "gizmo fuzz: " << o.board << ": " << log->reader.truncation()
+                << "; its header holds the whole run given, which is what the campaign varies\n";
+    base = log->request;
+    precision = o.precisionGiven ? given.precision : log->precision;
+    if (!o.precisionGiven) precisionFrom = o.board;
+    try {
+      if (o.keysGiven) base.keys = loadKeys(o.run.keys);
+    } catch (const io::InputError& e) {
+      std::cerr << e.what() << '\n';
       return false;
     }
-    base.model = o.run.model == "classic" ? MotionModel::Classic : MotionModel::Ballistic;
+    if (o.modelGiven) base.model = given.model;
+    if (o.maxTickGiven) base.maxTick = o.run.maxTick;
+    if (o.boardTimeGiven) base.duration = o.run.time;
   }
-  if (o.maxTickGiven) base.maxTick = o.run.maxTick;
-  if (o.boardTimeGiven) base.duration = o.run.time;
-  if (!(base.maxTick > 0) || !(base.duration > 0)) {
-    std::cerr << "gizmo fuzz: --max-tick and --time must be more than 0\n";
-    code = kExitBadInput;
-    return false;
-  }
+  code = kExitBadInput;  // checkRun set it to 0 when it read the board
+  if (!fuzzScalar(precision, precisionFrom, scalar)) return false;
+  code = kExitOk;
   return true;
 }
 
@@ -330,7 +302,6 @@ int boardCampaign(const FuzzOptions& o, std::vector<const fz::Property*> propert
   if (!baseRun(o, base, scalar, code)) return code;
   if (!checkVariations(o.vary)) return kExitBadInput;
   fz::VariationOptions vary = o.vary;
-  std::string checkArguments;
   std::optional<fz::Property> expected;
   if (!expectations.empty()) {
     // Every case runs at least as long as the expectations need, and shrinking cuts none shorter.
@@ -345,17 +316,16 @@ int boardCampaign(const FuzzOptions& o, std::vector<const fz::Property*> propert
     }
     expected = fz::expectationsProperty(expectations);
     properties.push_back(&*expected);
-    checkArguments = " --expect " + o.expect;
   }
   if (properties.empty()) {
-    std::cerr << "gizmo fuzz: --property expectations needs --expect FILE\n";
+    std::cerr << "gizmo fuzz: " << o.expect << " holds no expectation, and --property expectations asks for those alone\n";
     return kExitBadInput;
   }
   const fz::VariationSource source(base, vary, scalar);
   fz::CampaignOptions c;
   c.properties = properties;
   c.source = &source;
-  return runCampaignAndReport(o, c, checkArguments);
+  return runCampaignAndReport(o, c);
 }
 
 }  // namespace
@@ -375,7 +345,7 @@ int fuzzCommand(const FuzzOptions& o) {
     std::cerr << "gizmo fuzz: give a BOARD to vary or --check one run, not both\n";
     return kExitBadInput;
   }
-  if (!o.check.empty()) return checkOne(o, properties);
+  // A malformed expectation file is refused before anything runs.
   std::vector<fz::Expectation> expectations;
   try {
     if (!o.expect.empty()) expectations = fz::readExpectationFile(o.expect);
@@ -383,6 +353,7 @@ int fuzzCommand(const FuzzOptions& o) {
     std::cerr << "gizmo fuzz: " << e.what() << '\n';
     return kExitBadInput;
   }
+  if (!o.check.empty()) return checkOne(o, properties, expectations);
   if (!o.board.empty()) return boardCampaign(o, properties, expectations);
   if (o.boardTimeGiven) {
     // Before --budget had its name, a campaign's --time was seconds of wall time: say so rather
@@ -398,7 +369,7 @@ int fuzzCommand(const FuzzOptions& o) {
   }
   fz::CampaignOptions c;
   c.properties = properties;
-  return runCampaignAndReport(o, c, "");
+  return runCampaignAndReport(o, c);
 }
 
 }  // namespace gizmo::cli

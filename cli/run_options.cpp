@@ -24,8 +24,7 @@ void addStrictOption(CLI::App& command, bool& strict) {
                    "Refuse a board that is not read exactly as written (what would be a warning is an error, exit 2)");
 }
 
-bool checkRun(const RunOptions& o, const std::string& command, CheckedRun& out, int& exitCode) {
-  exitCode = kExitBadInput;
+bool checkRunOptions(const RunOptions& o, const std::string& command, CheckedOptions& out) {
   const std::string prefix = "gizmo " + command + ": ";
   std::optional<MotionModel> model;
   if (o.model == "ballistic") model = MotionModel::Ballistic;
@@ -51,6 +50,15 @@ bool checkRun(const RunOptions& o, const std::string& command, CheckedRun& out, 
     std::cerr << prefix << "--max-tick must be a number of seconds above 0 and at most 10\n";
     return false;
   }
+  out.model = *model;
+  out.precision = *precision;
+  return true;
+}
+
+bool checkRun(const RunOptions& o, const std::string& command, CheckedRun& out, int& exitCode) {
+  exitCode = kExitBadInput;
+  CheckedOptions checked;
+  if (!checkRunOptions(o, command, checked)) return false;
   try {
     LoadedBoard board = loadBoard(o.board, o.strict);
     out.request.board = std::move(board.spec);
@@ -61,10 +69,10 @@ bool checkRun(const RunOptions& o, const std::string& command, CheckedRun& out, 
     std::cerr << e.what() << '\n';
     return false;
   }
-  out.request.model = *model;
+  out.request.model = checked.model;
   out.request.maxTick = o.maxTick;
   out.request.duration = o.time;
-  out.precision = *precision;
+  out.precision = checked.precision;
   exitCode = kExitOk;
   return true;
 }

@@ -37,6 +37,14 @@ struct CheckedRun {
   std::vector<std::string> boardWarnings;  // what the reader read leniently (io::format lines)
 };
 
+// The options' own values (model, precision, --time, --max-tick) checked and read, the board and
+// key script left alone; on failure prints why, prefixed with the command's name.
+struct CheckedOptions {
+  MotionModel model = MotionModel::Ballistic;
+  PrecisionChoice precision;
+};
+bool checkRunOptions(const RunOptions& options, const std::string& command, CheckedOptions& out);
+
 // Checks the options and reads the board and key script; on failure prints why (prefixed with
 // the command's name) and returns the exit code in `exitCode`.
 bool checkRun(const RunOptions& options, const std::string& command, CheckedRun& out, int& exitCode);

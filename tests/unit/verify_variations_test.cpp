@@ -59,7 +59,7 @@ RunRequest specLike() {
 
 TEST(Variations, CaseZeroIsTheRunGiven) {
   const VariationSource source(specLike(), VariationOptions{});
-  EXPECT_EQ(describeRun(source.run(7, 0)), describeRun(specLike()));
+  EXPECT_EQ(describeRun(source.make(7, 0).run), describeRun(specLike()));
   EXPECT_TRUE(source.departure(7, 0).empty());
   EXPECT_EQ(describeDeparture(specLike(), source.departure(7, 0)), "none: the board as given");
 }
@@ -68,12 +68,12 @@ TEST(Variations, AcaseIsMadeFromItsSeedAlone) {
   const VariationSource a(specLike(), VariationOptions{}), b(specLike(), VariationOptions{});
   int differentFromBase = 0;
   for (std::uint64_t k = 1; k < 50; ++k) {
-    EXPECT_EQ(describeRun(a.run(11, k)), describeRun(b.run(11, k))) << k;
+    EXPECT_EQ(describeRun(a.make(11, k).run), describeRun(b.make(11, k).run)) << k;
     EXPECT_EQ(describeDeparture(a.base(), a.departure(11, k)), describeDeparture(b.base(), b.departure(11, k)));
-    if (describeRun(a.run(11, k)) != describeRun(specLike())) ++differentFromBase;
+    if (describeRun(a.make(11, k).run) != describeRun(specLike())) ++differentFromBase;
   }
   EXPECT_GE(differentFromBase, 45);  // nearly every case departs from the run given
-  EXPECT_NE(describeRun(a.run(11, 1)), describeRun(a.run(12, 1)));
+  EXPECT_NE(describeRun(a.make(11, 1).run), describeRun(a.make(12, 1).run));
 }
 
 // A ball is never moved into a gizmo or another ball, nor a ball at rest in an absorber set moving
@@ -129,7 +129,7 @@ TEST(Variations, TheScalarVariesOnlyWhenAsked) {
   const VariationSource source(specLike(), on);
   std::uint64_t k = 1;
   while (!source.departure(3, k).otherScalar) ++k;
-  EXPECT_EQ(source.scalar(3, k), Precision::LongDouble);
+  EXPECT_EQ(source.make(3, k).scalar, Precision::LongDouble);
   EXPECT_NE(describeDeparture(specLike(), source.departure(3, k)).find("in long double (double given)"), std::string::npos);
 }
 

@@ -79,7 +79,7 @@ namespace {
 
 class GeneratedSource final : public CaseSource {
  public:
-  RunRequest run(std::uint64_t campaignSeed, std::uint64_t index) const override { return caseRun(campaignSeed, index); }
+  Case make(std::uint64_t campaignSeed, std::uint64_t index) const override { return {caseRun(campaignSeed, index)}; }
   Shrunk shrink(std::uint64_t, std::uint64_t, const RunRequest& failing, const Fails& fails,
                 std::size_t budget) const override {
     const Minimised m = minimise(failing, [&](const RunRequest& r) { return fails(r, Precision::Double); }, budget);
@@ -98,17 +98,14 @@ const CaseSource& generatedCases() {
 VariationSource::VariationSource(RunRequest base, VariationOptions options, Precision scalar)
     : base_(std::move(base)), options_(options), scalar_(scalar) {}
 
-Precision VariationSource::scalar(std::uint64_t campaignSeed, std::uint64_t index) const {
-  return scalarOf(scalar_, departure(campaignSeed, index));
-}
-
 Departure VariationSource::departure(std::uint64_t campaignSeed, std::uint64_t index) const {
   if (index == 0) return {};  // case 0: the user's run as given
   return randomDeparture(base_, caseSeed(campaignSeed, index), options_);
 }
 
-RunRequest VariationSource::run(std::uint64_t campaignSeed, std::uint64_t index) const {
-  return applyDeparture(base_, departure(campaignSeed, index));
+CaseSource::Case VariationSource::make(std::uint64_t campaignSeed, std::uint64_t index) const {
+  const Departure d = departure(campaignSeed, index);
+  return {applyDeparture(base_, d), scalarOf(scalar_, d)};
 }
 
 CaseSource::Shrunk VariationSource::shrink(std::uint64_t campaignSeed, std::uint64_t index, const RunRequest&,
@@ -166,8 +163,7 @@ CampaignResult runCampaign(const CampaignOptions& o) {
         std::lock_guard<std::mutex> lock(progressMutex);
         o.caseStarted(index);
       }
-      const RunRequest run = source.run(o.seed, index);
-      const Precision scalar = source.scalar(o.seed, index);
+      const auto [run, scalar] = source.make(o.seed, index);
       std::uint64_t failed = 0;
       const std::vector<PropertyResult> results = checkProperties(o.properties, run, scalar);
       for (std::size_t k = 0; k < o.properties.size(); ++k) {
@@ -235,28 +231,32 @@ std::uint64_t casesPlanned(const CampaignResult& r) {
   return cases;
 }
 
-std::string summaryLine(const CampaignResult& r) {
+std::string campaignDigest(const CampaignResult& r) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
   auto mix = [&](std::uint64_t x) {
     for (int i = 0; i < 8; ++i) h = (h ^ ((x >> (8 * i)) & 0xff)) * 0x100000001b3ULL;
   };
-  const std::uint64_t cases = casesChecked(r);
   for (const CaseOutcome& c : r.outcomes) {
     mix(c.index);
     for (char ch : c.property) mix(std::uint64_t(static_cast<unsigned char>(ch)));
     mix(c.holds);
     mix(c.fingerprint);
   }
+  return hex(h);
+}
+
+std::string summaryLine(const CampaignResult& r) {
   const std::size_t propertyCount = std::size_t(std::count(r.properties.begin(), r.properties.end(), ',')) + 1;
   std::ostringstream s;
+  // A variation campaign's source, without its options: "variations of run HASH".
   if (r.cases != "generated") s << r.cases.substr(0, r.cases.find(" keys ")) << ", ";
-  s << "seed " << r.seed << ", " << cases << " of " << r.count << " cases, " << propertyCount << " properties ("
-    << r.properties << "): " << r.outcomes.size() << " checks, " << failureCount(r) << " failures, digest " << hex(h)
-    << (r.complete ? "" : " (stopped early)");
+  s << "seed " << r.seed << ", " << casesChecked(r) << " of " << r.count << " cases, " << propertyCount
+    << " properties (" << r.properties << "): " << r.outcomes.size() << " checks, " << failureCount(r)
+    << " failures, digest " << campaignDigest(r) << (r.complete ? "" : " (stopped early)");
   return s.str();
 }
 
-void writeCampaign(CampaignResult& r, const std::string& dir, const std::string& gizmo, const std::string& checkArguments) {
+void writeCampaign(CampaignResult& r, const std::string& dir, const std::string& gizmo, const std::string& expectFile) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec) throw CampaignError("cannot create " + dir + ": " + ec.message());
@@ -287,7 +287,8 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
                                   quoted((folder / "keys.txt").string()) + " --model " +
                                   std::string(motionModelName(c.minimal.model)) + " --max-tick " +
                                   shortest(c.minimal.maxTick) + " --time " + shortest(c.minimal.duration) +
-                                  (c.scalar == Precision::LongDouble ? " --precision long-double" : "") + checkArguments;
+                                  (c.scalar == Precision::LongDouble ? " --precision long-double" : "") +
+                                  (expectFile.empty() ? "" : " --expect " + quoted(expectFile));
       writeFile(folder / "command.txt", command + "\n");
       const std::string departure =
           c.departure.empty() ? "" : "departure from the run given: " + c.departure + "\n";

@@ -45,6 +45,14 @@ void inDisc(SeededRandom& r, double radius, double& x, double& y) {
   x *= radius, y *= radius;
 }
 
+// A ball's change: moved, turned, scaled, kicked.
+void applyBallChange(BallSpec& ball, const BallDeparture& b) {
+  ball.x += b.dx, ball.y += b.dy;
+  rotate(b.turn, ball.vx, ball.vy);
+  ball.vx = ball.vx * b.speedFactor + b.kickVx;
+  ball.vy = ball.vy * b.speedFactor + b.kickVy;
+}
+
 double effectiveDuration(const RunRequest& base, const Departure& d) { return d.duration ? *d.duration : base.duration; }
 
 bool sameBallChange(const BallDeparture& b) {
@@ -129,6 +137,8 @@ Departure randomDeparture(const RunRequest& base, std::uint64_t seed, const Vari
   // board, with the changes before it, has no problem it did not have (an overlap, or a ball at
   // rest in an absorber set moving): up to four draws, else the ball is left as it was.
   const std::size_t problems = checkBoardSpec(base.board).size();
+  const double turn = o.angle > 0 ? halfTurnTangent(std::min(o.angle, 179.0)) : 0;
+  BoardSpec varied = base.board;  // with the ball changes kept so far
   for (std::size_t i = 0; i < base.board.balls.size(); ++i) {
     if (!r.chance(2)) continue;
     const BallSpec& ball = base.board.balls[i];
@@ -138,20 +148,18 @@ Departure randomDeparture(const RunRequest& base, std::uint64_t seed, const Vari
       if (o.position > 0) inDisc(r, o.position, b.dx, b.dy);
       if (ball.vx != 0 || ball.vy != 0) {
         if (o.speed > 0) b.speedFactor = 1 + r.real(-o.speed, o.speed) / 100;
-        if (o.angle > 0) {
-          const double t = halfTurnTangent(std::min(o.angle, 179.0));
-          b.turn = r.real(-t, t);
-        }
+        if (o.angle > 0) b.turn = r.real(-turn, turn);
       } else if (o.kick > 0) {
         inDisc(r, o.kick, b.kickVx, b.kickVy);
       }
       if (sameBallChange(b)) break;
       // With the changes of the balls before it: two balls moved toward each other may each fit
-      // alone and overlap together (found on a real board of 180 balls).
-      Departure with = d;
-      with.balls.push_back(b);
-      if (checkBoardSpec(applyDeparture(base, with).board).size() <= problems) {
+      // alone and overlap together (found on a real board of 269 balls).
+      BoardSpec tried = varied;
+      applyBallChange(tried.balls[i], b);
+      if (checkBoardSpec(tried).size() <= problems) {
         d.balls.push_back(b);
+        varied = std::move(tried);
         break;
       }
     }
@@ -192,13 +200,7 @@ RunRequest applyDeparture(const RunRequest& base, const Departure& d) {
   std::erase_if(keys, [&](const TimedKey& k) { return !(k.time >= 0) || !(k.time < run.duration); });
   std::stable_sort(keys.begin(), keys.end(), [](const TimedKey& a, const TimedKey& b) { return a.time < b.time; });
   run.keys = std::move(keys);
-  for (const BallDeparture& b : d.balls) {
-    BallSpec& ball = run.board.balls[b.ball];
-    ball.x += b.dx, ball.y += b.dy;
-    rotate(b.turn, ball.vx, ball.vy);
-    ball.vx = ball.vx * b.speedFactor + b.kickVx;
-    ball.vy = ball.vy * b.speedFactor + b.kickVy;
-  }
+  for (const BallDeparture& b : d.balls) applyBallChange(run.board.balls[b.ball], b);
   run.board.gravity *= d.gravityFactor;
   run.board.mu *= d.muFactor;
   run.board.mu2 *= d.mu2Factor;

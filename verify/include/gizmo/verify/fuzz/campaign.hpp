@@ -24,9 +24,13 @@ namespace gizmo::verify::fuzz {
 class CaseSource {
  public:
   virtual ~CaseSource() = default;
-  virtual RunRequest run(std::uint64_t campaignSeed, std::uint64_t index) const = 0;
-  // The scalar the case's properties run in: Double, or LongDouble for a variation that asks.
-  virtual Precision scalar(std::uint64_t, std::uint64_t) const { return Precision::Double; }
+  // A case: its run, and the scalar its properties run in (Double, or LongDouble for a variation
+  // that asks).
+  struct Case {
+    RunRequest run;
+    Precision scalar = Precision::Double;
+  };
+  virtual Case make(std::uint64_t campaignSeed, std::uint64_t index) const = 0;
   // Whether a run in a scalar still fails.
   using Fails = std::function<bool(const RunRequest&, Precision)>;
   struct Shrunk {
@@ -48,8 +52,7 @@ class VariationSource final : public CaseSource {
  public:
   // `scalar`: the base run's, Double or LongDouble (a log recorded in long double).
   VariationSource(RunRequest base, VariationOptions options, Precision scalar = Precision::Double);
-  RunRequest run(std::uint64_t campaignSeed, std::uint64_t index) const override;
-  Precision scalar(std::uint64_t campaignSeed, std::uint64_t index) const override;
+  Case make(std::uint64_t campaignSeed, std::uint64_t index) const override;
   Shrunk shrink(std::uint64_t campaignSeed, std::uint64_t index, const RunRequest& failing, const Fails& fails,
                 std::size_t budget) const override;
   std::string describe() const override;
@@ -129,15 +132,18 @@ std::uint64_t casesPlanned(const CampaignResult& r);
 // "seed 7, cases 0..39 of 40, 6 properties: 240 checks, 0 failures, digest 0123456789abcdef": the
 // same line for a run and for the merge of its shards.
 std::string summaryLine(const CampaignResult& r);
+// The digest that line ends with: every outcome and the fingerprint of what each check saw, in
+// case order (16 hex digits).
+std::string campaignDigest(const CampaignResult& r);
 
 // Writes dir/results.txt (one line per outcome) and, for each failure, a folder with the minimal
 // board (board.xml), its key script (keys.txt), its replay log (run.gzlog), what failed
 // (failure.txt) and the one-line command that checks it again (command.txt). `gizmo` is how the
-// command names the program, and `checkArguments` ends the command (" --expect FILE" for a
-// campaign with the user's expectations). A variation's failure also has departure.txt: how its
-// minimal run departs from the user's, in words. Throws CampaignError when dir cannot be written.
+// command names the program; `expectFile`, when not empty, is the user's expectation file, which
+// that command then checks too. A variation's failure also has departure.txt: how its minimal run
+// departs from the user's, in words. Throws CampaignError when dir cannot be written.
 void writeCampaign(CampaignResult& r, const std::string& dir, const std::string& gizmo,
-                   const std::string& checkArguments = "");
+                   const std::string& expectFile = "");
 // Reads what writeCampaign wrote. Throws CampaignError (naming the file and line) when it is not,
 // and when a result that says it is complete lacks a check of its shards or holds one twice, or
 // holds a case of another shard: a file cut short or edited, never merged as if whole.
