@@ -107,6 +107,7 @@ class RecordEncoder {
     c_.reset(now, nextSequence);
     held_.clear();
     impliedFriction_.reset();
+    rulesAfterFriction_.clear();
     nowPlusTick_ = c_.now + c_.maxTick;
     lastFrictionK_ = lastTickK_ = 0;  // a chunk's bytes depend on nothing before its keyframe
   }
@@ -150,6 +151,7 @@ class RecordEncoder {
       if (!impliedFriction_ || impliedFriction_->ball != e.a || !sameEncoding(impliedFriction_->time, e.time))
         throw std::logic_error("replay: a friction tick without its friction rule");
       impliedFriction_.reset();
+      writeRulesAfterFriction();
     }
     setNow(e.time);
     ++records_;
@@ -203,11 +205,16 @@ class RecordEncoder {
   }
   // The board applies the friction rule at every friction tick, and only there: the reader puts
   // that rule back after the tick's record, so it is not written (a friction tick without it is
-  // a broken promise of the board's, and stops the recording).
+  // a broken promise of the board's, and stops the recording). Rules the tick applies after it
+  // (Settled) wait until it is known whether the friction rule was implied, and follow it.
   void rule(const Real& t, ModelRule r, GizmoId g, GizmoId other) {
     ++records_;
     if (r == ModelRule::FrictionApplied && other == kNoGizmo && held_.size() == 0 && !impliedFriction_) {
       impliedFriction_ = ImpliedFriction{g, t};
+      return;
+    }
+    if (impliedFriction_ && sameEncoding(t, impliedFriction_->time)) {
+      rulesAfterFriction_.push_back(PendingRule{r, g, other, t});
       return;
     }
     writeRule(hold(t), r, g, other);
@@ -241,6 +248,12 @@ class RecordEncoder {
     impliedFriction_.reset();
     heldTime_ = f.time;
     writeRule(held_, ModelRule::FrictionApplied, f.ball, kNoGizmo);
+    writeRulesAfterFriction();
+  }
+  // Held like any rule, at the friction's time (the reader gives them that time).
+  void writeRulesAfterFriction() {
+    for (const PendingRule& p : rulesAfterFriction_) writeRule(hold(p.time), p.rule, p.gizmo, p.other);
+    rulesAfterFriction_.clear();
   }
 
   ByteWriter& hold(const Real& t) {
@@ -310,6 +323,12 @@ class RecordEncoder {
     Real time;
   };
   std::optional<ImpliedFriction> impliedFriction_;
+  struct PendingRule {
+    ModelRule rule;
+    GizmoId gizmo, other;
+    Real time;
+  };
+  std::vector<PendingRule> rulesAfterFriction_;
   std::uint64_t records_ = 0;
 };
 

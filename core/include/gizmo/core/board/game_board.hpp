@@ -127,6 +127,7 @@ class GameBoard final : private BoardAccess<Real> {
   void releaseContactsOn(GizmoId g) override { starting_.push_back(g); }
   bool roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const override;
   bool cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const override;
+  bool ballAtRest(GizmoId id) const;
   bool jammed() const override { return collisionsInWindow_ > kJamThreshold; }
   GizmoId spawnBall(const Vec2<Real>& p) override;
 
@@ -145,6 +146,7 @@ class GameBoard final : private BoardAccess<Real> {
   void execute(const Event<Real>& e);
   void applyEvent(const Event<Real>& e);
   void releaseContactsOfStarted();
+  void wakeWhatRestsOnStarted();
   void releaseContactsNow(GizmoId g);
   void fireTriggersOf(GizmoId source);
   void performAction(GizmoId target) override;

@@ -215,14 +215,18 @@ bool GameBoard<Real>::roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ign
 }
 
 // The other surface is looked for among the gizmos listed in the cells around the ball, and the
-// walls (listed in none). Within a minimum bounce's rise, restSpeed²/(2|g|): the farthest the
-// bounce that the rule replaces would lift the ball off the surface it struck.
+// walls (listed in none), within settleRise: the height below which a bounce is no bounce is
+// also the gap below which a surface holds (docs/physics.md, "Piles"; the minimum bounce's own
+// rise, 2·10⁻⁶ L, let a ball in a row of balls rattle until its neighbours came that close). A
+// ball at rest is a still surface too: a circle of the ball's radius (every ball is a candidate;
+// a board holds few enough that the grid is not worth it here).
 template <class Real>
 bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const {
-  if (params_.gravity == Real(0) || !isGizmoId(by) || !gizmos_[std::size_t(by)]->restingShape()) return false;
+  if (params_.gravity == Real(0) || !isGizmoId(by)) return false;
+  if (!gizmos_[std::size_t(by)]->restingShape() && !ballAtRest(by)) return false;
   const Vec2<Real> gravity(Real(0), params_.gravity);
   const Real r = Ball<Real>::radius();
-  const Real rise = params_.restSpeed * params_.restSpeed / (Real(2) * absOf(params_.gravity));
+  const Real& rise = params_.settleRise;
   auto holds = [&](GizmoId other) {
     if (other == by || other == ball) return false;
     const Shape<Real>* shape = gizmos_[std::size_t(other)]->restingShape();
@@ -231,12 +235,24 @@ bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real
            });
   };
   if (holds(outerWallsId())) return true;
+  for (GizmoId other : balls_) {
+    if (other == by || other == ball || !ballAtRest(other)) continue;
+    const Vec2<Real> d = p - gizmos_[std::size_t(other)]->asBall()->positionAt(now_);
+    const Real most = Real(2) * r + rise, dist2 = lengthSquared(d);
+    if (Real(0) < dist2 && !(most * most < dist2) && gravityHeldBetween(d, normal, gravity)) return true;
+  }
   const CellRange c = cellsOf(Box<Real>::around(p, r + rise));
   for (int y = c.y0; y <= c.y1; ++y)
     for (int x = c.x0; x <= c.x1; ++x)
       for (GizmoId g : grid_[std::size_t(y * kBoardSize + x)])
         if (holds(g)) return true;
   return false;
+}
+
+template <class Real>
+bool GameBoard<Real>::ballAtRest(GizmoId id) const {
+  const Ball<Real>* b = gizmos_[std::size_t(id)]->asBall();
+  return b && !b->captured() && b->resting();
 }
 
 template <class Real>
@@ -442,9 +458,13 @@ void GameBoard<Real>::applyEvent(const Event<Real>& e) {
     case EventKind::FrictionTick: {
       Ball<Real>& b = ballById(e.a);
       const Vec2<Real> p = b.positionAt(now_);
-      b.setState(now_, p, Ball<Real>::frictionApplied(b.velocityAt(now_), params_.frictionStep, params_), params_);
+      Vec2<Real> v = Ball<Real>::frictionApplied(b.velocityAt(now_), params_.frictionStep, params_);
+      const bool settled = b.settlesOnLevel(v, params_);
+      if (settled) v = Vec2<Real>();
+      b.setState(now_, p, v, params_);
       ++b.nextFrictionIndex;
       reportRule(ModelRule::FrictionApplied, e.a, kNoGizmo);
+      if (settled) reportRule(ModelRule::Settled, e.a, b.contact()->gizmo);
       recompute_.push_back(e.a);
       break;
     }
@@ -463,6 +483,33 @@ void GameBoard<Real>::applyEvent(const Event<Real>& e) {
       break;
   }
   releaseContactsOfStarted();
+  wakeWhatRestsOnStarted();
+}
+
+// A ball that leaves rest wakes every ball at rest that it may hold up (docs/physics.md,
+// "Piles"): one touching it, within the broad phase's margin, with the mover on gravity's side
+// of it. A woken ball leaves rest in turn, so a pile wakes from the bottom up. A ball that only
+// touches the mover from beside or below wakes too when gravity leans on the mover at all: it
+// costs a few events (it settles again), where missing one would leave it hanging in the air.
+template <class Real>
+void GameBoard<Real>::wakeWhatRestsOnStarted() {
+  const Real r = Ball<Real>::radius();
+  const Real reach = Real(2) * r + fromDouble<Real>(detail::kBroadPhaseMargin);
+  const Vec2<Real> gravity(Real(0), params_.gravity);
+  for (std::size_t i = 0; i < recompute_.size(); ++i) {
+    if (!isBallId(recompute_[i])) continue;
+    Ball<Real>& mover = static_cast<Ball<Real>&>(*gizmos_[std::size_t(recompute_[i])]);
+    if (!mover.takeStartedMoving()) continue;
+    const Vec2<Real> below = mover.positionAt(now_);
+    for (GizmoId id : balls_) {
+      Ball<Real>& b = *gizmos_[static_cast<std::size_t>(id)]->asBall();
+      if (!b.wedged() || b.captured()) continue;
+      const Vec2<Real> d = below - b.positionAt(now_);
+      if (reach * reach < lengthSquared(d) || !(Real(0) < dot(d, gravity))) continue;
+      b.wake(*this, mover.id());
+      recompute_.push_back(id);
+    }
+  }
 }
 
 template <class Real>

@@ -22,9 +22,11 @@ enum class ModelRule : std::uint8_t {
   SpinnerBlocked,    // a spinner pinching a ball stops where it stands
   Spawned,           // a spawner put a ball at its centre (the other gizmo: that ball)
   SpawnBlocked,      // a spawner acted with no room at its centre, or no ball to be had
+  Settled,           // a ball slower than restSpeed on a level surface stops (docs/physics.md, "Piles")
 };
-// The last rule: a log's rule value above it is refused.
-inline constexpr ModelRule kLastModelRule = ModelRule::SpawnBlocked;
+// The last rule: a log's rule value above it is refused. A rule is four bits of a record's tag
+// (replay/record_codec.hpp), so Settled is the last that fits without a new record kind.
+inline constexpr ModelRule kLastModelRule = ModelRule::Settled;
 
 inline std::string_view modelRuleName(ModelRule r) {
   switch (r) {
@@ -43,6 +45,7 @@ inline std::string_view modelRuleName(ModelRule r) {
     case ModelRule::SpinnerBlocked: return "spinner-blocked";
     case ModelRule::Spawned: return "spawned";
     case ModelRule::SpawnBlocked: return "spawn-blocked";
+    case ModelRule::Settled: return "settled";
   }
   return "?";
 }

@@ -20,6 +20,10 @@ struct PhysicsParams {
   Real frictionStep{0.01};       // ballistic: friction ticks at k·h
   Real restSpeed{0.01};          // L/s: slower hits on a surface that gravity presses into are contacts
   std::int32_t pinchLimit = 16;  // hits of one ball in one flipper swing before the flipper blocks
+  // L: a bounce off a still surface that would lift the ball less than this is no bounce (the
+  // settling threshold, docs/physics.md "Piles"). Like pinchLimit, a constant of the model rather
+  // than of a run, so it is not in a log's header.
+  Real settleRise{0.005};
 };
 
 }  // namespace gizmo

@@ -62,11 +62,21 @@ class Ball final : public AbstractGizmo<Real> {
 
   // Re-anchors the path at time t; the acceleration follows the model and the contact.
   void setState(const Real& t, const Vec2<Real>& p, const Vec2<Real>& v, const PhysicsParams<Real>& params) {
+    const bool wasResting = resting();
     t0_ = t;
     p0_ = p;
     v0_ = v;
     a_ = params.model == MotionModel::Ballistic ? effectiveGravity(params) : Vec2<Real>();
     if (wedged_) a_ = Vec2<Real>();
+    if (wasResting && !resting()) startedMoving_ = true;
+  }
+
+  // Whether the ball left rest since the last call (what rests on it must wake: GameBoard's
+  // wakeWhatRestsOnStarted). Only within one event: not part of the state.
+  bool takeStartedMoving() {
+    const bool started = startedMoving_;
+    startedMoving_ = false;
+    return started;
   }
 
   // Gravity less the part a supporting surface takes (none when free or wedged).
@@ -91,6 +101,7 @@ class Ball final : public AbstractGizmo<Real> {
   void release(const Real& t, const Vec2<Real>& p, const Vec2<Real>& v, const PhysicsParams<Real>& params) {
     captured_ = false;
     setState(t, p, v, params);
+    startedMoving_ = false;  // held in an absorber, it held nothing up
   }
 
   const std::optional<SurfaceContact<Real>>& contact() const { return contact_; }
@@ -162,13 +173,29 @@ class Ball final : public AbstractGizmo<Real> {
       b->rememberJamMeeting(this->id(), now, JamMeeting::Hit);
     }
     Real exchange = -closing;  // added to a along n, taken from b
-    const bool pressedTogether =
-        dot(Vec2<Real>(effectiveGravity(params) - b->effectiveGravity(params)), n) < Real(0);
-    if (pressedTogether && -closing < params.restSpeed) {
+    const Real pressing = -dot(Vec2<Real>(effectiveGravity(params) - b->effectiveGravity(params)), n);
+    const bool pressedTogether = Real(0) < pressing;
+    if (pressedTogether && (-closing < params.restSpeed || settles(closing, pressing, params))) {
       if (jammed) {
         // One rests on the other with no room to bounce: both come to rest.
         comeToRest(board, b->id());
         b->comeToRest(board, this->id());
+        return;
+      }
+      // Pressed slowly onto a ball at rest: that ball is a still surface to it (docs/physics.md,
+      // "Piles"). It rests there when it is held (balanced, or in a V with a second support
+      // at rest), and otherwise alone takes the minimum bounce: a slow hit from above does
+      // not stir a pile.
+      if (b->resting() && dot(effectiveGravity(params), n) < Real(0)) {
+        if (restsOn(*b, pa, n, va, board)) return;
+        board.reportRule(ModelRule::MinimumBounce, this->id(), b->id());
+        setVelocity(now, pa, Vec2<Real>(va + (params.restSpeed - closing) * n), board);
+        return;
+      }
+      if (resting() && dot(b->effectiveGravity(params), n) > Real(0)) {
+        if (b->restsOn(*this, pb, -n, vb, board)) return;
+        board.reportRule(ModelRule::MinimumBounce, b->id(), this->id());
+        b->setVelocity(now, pb, Vec2<Real>(vb - (params.restSpeed - closing) * n), board);
         return;
       }
       exchange = (params.restSpeed - closing) / Real(2);  // the minimum bounce
@@ -213,10 +240,11 @@ class Ball final : public AbstractGizmo<Real> {
     // still or opening ball would keep its normal speed or be turned into the flipper: nothing
     // would part them, and a flipper triggered by its own hit restarted its swing against the
     // ball at one instant for ever; campaign seed 20261203, case 1495.)
-    const bool pressed =
-        !(closing < Real(0)) || Real(dot(effectiveGravity(params), n) + surfaceBend) < Real(0);
+    const Real pressing = -Real(dot(effectiveGravity(params), n) + surfaceBend);
+    const bool pressed = !(closing < Real(0)) || Real(0) < pressing;
+    const bool still = surfaceBend == Real(0) && u == Vec2<Real>();
     const bool jammed = board.jammed();
-    if (pressed && -closing < params.restSpeed) {
+    if (pressed && (-closing < params.restSpeed || (still && settles(closing, pressing, params)))) {
       if (type == SurfaceType::StaticSegment && surface) {
         if (contact_ && !(contact_->gizmo == surface->gizmo && contact_->feature == surface->feature)) {
           // Pressed onto a second surface while sliding on one: it rests in the corner.
@@ -228,13 +256,13 @@ class Ball final : public AbstractGizmo<Real> {
         setState(now, p, v - dot(v, n) * n, params);
         return true;
       }
-      if (surfaceBend == Real(0) && u == Vec2<Real>() && balancedOn(n, v, params)) {
+      if (still && balancedOn(n, v, params)) {
         // Exactly on top of something round and still, with nothing to roll it off: it rests
         // there, where the minimum bounce would rattle for ever (~1250 hits a second).
         comeToRest(board, kNoGizmo);
         return true;
       }
-      if (surfaceBend == Real(0) && u == Vec2<Real>() && board.cradled(this->id(), p, n, by)) {
+      if (still && board.cradled(this->id(), p, n, by)) {
         // In a V of two still surfaces that hold it against gravity (two circle bumpers): the
         // minimum bounce would rattle it between them for as long as the run lasts, giving back
         // most of what friction takes, where friction alone brings it to rest in the V.
@@ -290,6 +318,25 @@ class Ball final : public AbstractGizmo<Real> {
       }
     }
     setState(now, p, v, params);
+  }
+
+  // A bounce that would lift the ball less than settleRise off what it struck is no bounce: the
+  // speed it leaves at, |closing|, against the deceleration that presses it back, `pressing`,
+  // rises closing²/(2·pressing). Products only, so that exact scalars decide it too.
+  static bool settles(const Real& closing, const Real& pressing, const PhysicsParams<Real>& params) {
+    return Real(0) < pressing && Real(closing * closing) < Real(Real(2) * params.settleRise * pressing);
+  }
+
+  // This ball, at p moving at v, pressed slowly onto `support` (at rest) along n, from the
+  // support towards it: when the support holds it, alone (balanced on its top) or in a V with a
+  // second support at rest, it rests.
+  bool restsOn(const Ball& support, const Vec2<Real>& p, const Vec2<Real>& n, const Vec2<Real>& v,
+               BoardAccess<Real>& board) {
+    const PhysicsParams<Real>& params = board.params();
+    if (support.captured()) return false;
+    if (!balancedOn(n, v, params) && !board.cradled(this->id(), p, n, support.id())) return false;
+    comeToRest(board, support.id());
+    return true;
   }
 
   // Balanced on a round surface: gravity and the velocity both lie exactly along the normal,
@@ -350,11 +397,24 @@ class Ball final : public AbstractGizmo<Real> {
     const PhysicsParams<Real>& params = board.params();
     const Vec2<Real> p = p0_ + dt * v0_;
     Vec2<Real> v = frictionApplied(v0_, dt, params) + dt * effectiveGravity(params);
+    if (!(v == Vec2<Real>()) && settlesOnLevel(v, params)) {
+      v = Vec2<Real>();
+      board.reportRule(ModelRule::Settled, this->id(), contact_->gizmo);
+    }
     const bool changed = !(v == v0_);
     t0_ = t0_ + dt;
     p0_ = p;
     v0_ = v;
     return changed;
+  }
+
+  // Friction on a level surface (one that leaves the ball no part of gravity) stops a ball
+  // slower than restSpeed: nothing would ever move it again, and the law below only shrinks
+  // its speed geometrically, a friction tick every frictionStep for as long as the run lasts.
+  // Returns whether it stopped it (reported as Settled).
+  bool settlesOnLevel(const Vec2<Real>& v, const PhysicsParams<Real>& params) const {
+    return contact_ && !wedged_ && effectiveGravity(params) == Vec2<Real>() &&
+           lengthSquared(v) < Real(params.restSpeed * params.restSpeed);
   }
 
   // The friction law v ← v (1 − μ Δt − μ₂ |v| Δt). The factor is kept at 0 or above: beyond
@@ -473,6 +533,7 @@ class Ball final : public AbstractGizmo<Real> {
   Vec2<Real> p0_, v0_, a_;
   bool captured_ = false;
   bool wedged_ = false;
+  bool startedMoving_ = false;
   std::optional<SurfaceContact<Real>> contact_;
   // The jammed meetings of the latest instant that had any, one per other gizmo: grazes let
   // through (see collide), whose pair must skip its contact at that instant, and hits by balls

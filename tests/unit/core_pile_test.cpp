@@ -1,0 +1,163 @@
+// Piles (docs/physics.md, "Piles"): a bounce too small to rise settleRise is none, friction stops
+// a slow ball on a level surface, a ball at rest holds up what falls onto it, and a ball that
+// leaves rest wakes what rests on it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/board_builder.hpp"
+
+namespace gizmo {
+namespace {
+
+using test::ballAt;
+using test::build;
+using test::emptyBoard;
+using test::gizmoAt;
+using test::Recorder;
+
+// A ball dropped onto the floor from `height` (its lowest point above the floor), no friction:
+// the first hit is at √(2·25·height) L/s.
+struct Drop {
+  std::unique_ptr<GameBoard<double>> board;
+  Recorder<double> rec;
+};
+std::unique_ptr<Drop> dropOntoTheFloor(double height) {
+  auto d = std::make_unique<Drop>();
+  BoardSpec s = emptyBoard(25, 0, 0);
+  s.balls.push_back(ballAt("B", 10, 19.75 - height));
+  d->board = build(s, MotionModel::Ballistic);
+  d->board->setObserver(&d->rec);
+  d->board->tick(0.5);
+  return d;
+}
+
+TEST(Piles, ABounceThatWouldRiseLessThanSettleRiseIsNone) {
+  // At 0.4 L/s a bounce would rise 0.4²/50 = 0.0032 L < settleRise = 0.005 L: the ball lies on
+  // the floor from its first hit on.
+  auto low = dropOntoTheFloor(0.0032);
+  const Ball<double>& b = low->board->ballById(*low->board->find("B"));
+  ASSERT_TRUE(b.contact().has_value());
+  EXPECT_EQ(low->rec.countRule(ModelRule::ContactBegin), 1);
+  EXPECT_EQ(b.velocityAt(low->board->now()), Vec2<double>(0, 0));
+  EXPECT_EQ(b.positionAt(low->board->now()).y, 19.75);
+  // At 0.6 L/s it would rise 0.0072 L: an elastic bounce, which keeps bouncing without friction.
+  auto high = dropOntoTheFloor(0.0072);
+  EXPECT_EQ(high->rec.countRule(ModelRule::ContactBegin), 0);
+  EXPECT_GE(high->rec.ofKind(EventKind::Collision).size(), 10u);
+}
+
+// In the classic model a ball on a floor hops each tick by what the tick's gravity gives it,
+// g·dt = 1.25 L/s at the default tick, a bounce that rises 0.031 L: it lies on the floor only
+// with ticks below √(2·settleRise/g) = 0.02 s.
+TEST(Piles, FrictionStopsASlowBallOnALevelFloor) {
+  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
+    BoardSpec s = emptyBoard(25, 0.5, 0.5);
+    s.balls.push_back(ballAt("B", 5, 19.75, 0.3, 0));
+    const double tick = model == MotionModel::Classic ? 0.01 : 0.05;
+    auto board = build(s, model, tick);
+    Recorder<double> rec;
+    board->setObserver(&rec);
+    board->tick(15.0);
+    const Ball<double>& b = board->ballById(*board->find("B"));
+    EXPECT_EQ(b.velocityAt(board->now()), Vec2<double>(0, 0)) << motionModelName(model);
+    EXPECT_TRUE(b.resting()) << motionModelName(model);
+    EXPECT_EQ(rec.countRule(ModelRule::Settled), 1) << motionModelName(model);
+    // At rest it costs nothing but the board's ticks.
+    const std::uint64_t before = board->executedTotal();
+    board->tick(10.0);
+    EXPECT_EQ(board->executedTotal() - before, std::uint64_t(std::llround(10.0 / tick))) << motionModelName(model);
+  }
+}
+
+TEST(Piles, ABallOnASlopeNeverSettles) {
+  // Gravity along the slope keeps it going: only a level surface stops a slow ball.
+  BoardSpec s = emptyBoard(25, 0.5, 0.5);
+  s.gizmos.push_back(gizmoAt(GizmoType::Triangle, "T", 10, 10, 90, 1, 1));
+  s.balls.push_back(ballAt("B", 10.6, 9.6));
+  auto board = build(s, MotionModel::Ballistic);
+  Recorder<double> rec;
+  board->setObserver(&rec);
+  board->tick(3.0);
+  EXPECT_EQ(rec.countRule(ModelRule::Settled), 0);
+}
+
+// Nine balls dropped into a box two L wide (four balls fill its floor), from rest and from slow launches, with the friction of a
+// real multiball board.
+template <class Real>
+std::unique_ptr<GameBoard<Real>> ballsInABox(double seconds) {
+  BoardSpec s = emptyBoard(25, 0.025, 0.025);
+  for (int y = 10; y < 20; ++y) {
+    s.gizmos.push_back(gizmoAt(GizmoType::Square, "L" + std::to_string(y), 4, y));
+    s.gizmos.push_back(gizmoAt(GizmoType::Square, "R" + std::to_string(y), 7, y));
+  }
+  for (int i = 0; i < 9; ++i)
+    s.balls.push_back(ballAt("B" + std::to_string(i), 5.3 + 0.55 * (i % 3), 14.4 + 0.6 * (i / 3), 0.7 - 0.3 * (i % 4), 0));
+  auto board = build<Real>(s, MotionModel::Ballistic);
+  board->tick(Real(seconds));
+  return board;
+}
+
+template <class Real>
+void expectAPileAtRest(GameBoard<Real>& board) {
+  const std::vector<GizmoId>& ids = board.ballIds();
+  std::vector<Vec2<double>> p;
+  for (GizmoId id : ids) {
+    const Ball<Real>& b = board.ballById(id);
+    EXPECT_TRUE(b.resting()) << b.name();
+    const Vec2<Real> q = b.positionAt(board.now());
+    p.emplace_back(toDouble(q.x), toDouble(q.y));
+  }
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    int below = 0;
+    for (std::size_t j = 0; j < p.size(); ++j) {
+      if (i == j) continue;
+      const double d = std::hypot(p[i].x - p[j].x, p[i].y - p[j].y);
+      EXPECT_GE(d, 0.5 - 1e-9) << "balls " << i << " and " << j << " overlap";
+      if (d < 0.5 + 1e-5 && p[j].y > p[i].y) ++below;
+    }
+    // Nothing hangs in the air: a ball is on the floor, or something at rest lies under it.
+    EXPECT_TRUE(p[i].y == 19.75 || below > 0 || p[i].x < 5.25 + 1e-6 || p[i].x > 6.75 - 1e-6)
+        << "ball " << i << " at (" << p[i].x << ", " << p[i].y << ") rests on nothing";
+    EXPECT_GE(p[i].x, 5.25 - 1e-9);
+    EXPECT_LE(p[i].x, 6.75 + 1e-9);
+  }
+}
+
+TEST(Piles, BallsDroppedIntoABoxComeToRestAndStayAtRest) {
+  auto board = ballsInABox<double>(60.0);
+  expectAPileAtRest(*board);
+  const std::uint64_t before = board->executedTotal();
+  board->tick(30.0);
+  EXPECT_EQ(board->executedTotal() - before, 600u);  // the board's ticks, nothing else
+}
+
+// A ball B wedged between a still flipper's side and a triangle's slope, and a ball C that slid
+// down the slope onto it and rests in the V of B and the slope: held up by B alone.
+TEST(Piles, ABallThatLeavesRestWakesWhatRestsOnIt) {
+  BoardSpec s = emptyBoard(25, 0.5, 0.5);
+  s.gizmos.push_back(gizmoAt(GizmoType::Triangle, "T", 6, 12, 180));  // slope from (7, 12) down to (6, 13)
+  s.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "F", 4, 11));   // its side at x = 6 while still
+  s.balls.push_back(ballAt("B", 6.3, 12.2));
+  s.balls.push_back(ballAt("C", 6.7, 11.9));
+  s.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, "F", {}});
+  auto board = build(s, MotionModel::Ballistic);
+  board->tick(19.0);
+  const Ball<double>& b = board->ballById(*board->find("B"));
+  const Ball<double>& c = board->ballById(*board->find("C"));
+  ASSERT_TRUE(b.wedged());
+  ASSERT_TRUE(c.wedged());
+  const Vec2<double> restB = b.positionAt(board->now()), restC = c.positionAt(board->now());
+  EXPECT_NEAR(std::hypot(restC.x - restB.x, restC.y - restB.y), 0.5, 1e-6);
+  EXPECT_LT(restC.y, restB.y);
+  // The flipper swings away: B falls, and C, which B held up, does not hang in the air.
+  board->scheduleInput(20.0, 32, KeyDirection::Down);
+  board->tick(1.05);
+  EXPECT_FALSE(b.wedged());
+  EXPECT_FALSE(c.wedged());
+  board->tick(1.0);
+  EXPECT_GT(c.positionAt(board->now()).y, restC.y + 0.5);
+}
+
+}  // namespace
+}  // namespace gizmo
