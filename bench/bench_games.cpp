@@ -19,6 +19,8 @@ void BM_SpecExample600sBallistic(benchmark::State& s) { runGame(s, specExample()
 void BM_SpecExample3600sBallistic(benchmark::State& s) { runGame(s, specExample(), 3600); }
 void BM_Crowded60sBallistic(benchmark::State& s) { runGame(s, crowdedBoard(), 60); }
 void BM_RealManyBalls60sBallistic(benchmark::State& s) { runGame(s, realBoard(kRealManyBalls), 60); }
+// The pile of 55 balls at rest from about 55 s on (docs/physics.md, "Piles"): an hour of board time.
+void BM_RealManyBalls3600sBallistic(benchmark::State& s) { runGame(s, realBoard(kRealManyBalls), 3600); }
 void BM_RealFlipperCollision60sBallistic(benchmark::State& s) { runGame(s, realBoard(kRealFlipperCollision), 60); }
 void BM_RealMultiball60sBallistic(benchmark::State& s) { runGame(s, realBoard(kRealMultiball), 60); }
 
@@ -26,6 +28,7 @@ BENCHMARK(BM_SpecExample600sBallistic)->Unit(benchmark::kMillisecond)->Iteration
 BENCHMARK(BM_SpecExample3600sBallistic)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Crowded60sBallistic)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_RealManyBalls60sBallistic)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_RealManyBalls3600sBallistic)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_RealFlipperCollision60sBallistic)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_RealMultiball60sBallistic)->Unit(benchmark::kMillisecond)->Iterations(1);
 
