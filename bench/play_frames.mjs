@@ -5,15 +5,21 @@
 // worst and mean, and the worst single frame of any round (raw). performance.now() in a page
 // opened from a file is coarsened by the browser (to 0.1 ms in Chromium, with jitter), which
 // bounds how finely one frame is measured; the mean over 600 frames is finer.
-//   node bench/play_frames.mjs PAGE...
+//   node bench/play_frames.mjs [--frames N --rounds R] PAGE...   (default: 600 frames, five rounds)
 import path from "node:path";
 import os from "node:os";
 import fs from "node:fs";
 import { Browser } from "../tests/browser/play/webdriver.mjs";
 
-const pages = process.argv.slice(2);
+const args = process.argv.slice(2);
+let plan = "";
+if (args[0] === "--frames" && args[2] === "--rounds" && /^\d+$/.test(args[1] || "") && /^\d+$/.test(args[3] || "")) {
+  plan = `=${args[1]},${args[3]}`;
+  args.splice(0, 4);
+}
+const pages = args;
 if (!pages.length) {
-  console.error("usage: node bench/play_frames.mjs PAGE...");
+  console.error("usage: node bench/play_frames.mjs [--frames N --rounds R] PAGE...");
   process.exit(2);
 }
 const scratch = fs.mkdtempSync(path.join(os.tmpdir(), "gizmo-play-bench-"));
@@ -23,8 +29,8 @@ const browser = await Browser.start({
 try {
   console.log("page                          frames  board s   events  median ms  worst ms  mean ms  raw worst ms");
   for (const page of pages) {
-    await browser.open("file://" + path.resolve(page) + "#bench");
-    const r = await browser.waitFor("return window.gizmoPlay && window.gizmoPlay.bench();", 300000, "five rounds of 600 frames");
+    await browser.open("file://" + path.resolve(page) + "#bench" + plan);
+    const r = await browser.waitFor("return window.gizmoPlay && window.gizmoPlay.bench();", 1800000, "the bench's rounds of frames");
     console.log(`${path.basename(page).padEnd(29)} ${String(r.frames).padStart(6)} ${r.board_time.toFixed(2).padStart(8)} ` +
                 `${String(r.events).padStart(8)} ${r.median_ms.toFixed(2).padStart(10)} ${r.worst_ms.toFixed(2).padStart(9)} ` +
                 `${r.mean_ms.toFixed(3).padStart(8)} ${r.raw_worst_ms.toFixed(2).padStart(13)}`);

@@ -242,25 +242,30 @@
   // restart (no keys: every round makes the same frames); each frame's best time over the rounds
   // counts, so that a frame does not also hold the time a shared machine gave to other processes
   // (the worst single frame of any round is raw_worst_ms). The simulation's time per frame, median
-  // and worst, goes into #probe (docs/play.md, the figures).
-  const BENCH_FRAMES = 600, BENCH_ROUNDS = 5;
+  // and worst, goes into #probe (docs/play.md, the figures). FILE#bench=FRAMES,ROUNDS plays other
+  // counts (36000,1: ten minutes of board time, once).
+  function benchPlan(hash) {
+    const m = /^#bench(?:=(\d+),(\d+))?$/.exec(hash);
+    if (!m) return null;
+    return m[1] ? { frames: Math.max(1, Number(m[1])), rounds: Math.max(1, Number(m[2])) } : { frames: 600, rounds: 5 };
+  }
   function benchFrame() {
     const b = game.bench;
     if (b.done) return;
     b.best[b.frame] = Math.min(b.best[b.frame], game.simMs);
     b.rawWorst = Math.max(b.rawWorst, game.simMs);
-    if (++b.frame < BENCH_FRAMES) return;
+    if (++b.frame < b.frames) return;
     b.result = b.result || { board_time: game.now, events: game.events };
     b.frame = 0;
-    if (++b.round < BENCH_ROUNDS) {
+    if (++b.round < b.rounds) {
       restart();
       return;
     }
     b.done = true;
     const sorted = b.best.slice().sort((x, y) => x - y);
     Object.assign(b.result, {
-      frames: BENCH_FRAMES, rounds: BENCH_ROUNDS, median_ms: sorted[BENCH_FRAMES >> 1], worst_ms: sorted[BENCH_FRAMES - 1],
-      mean_ms: sorted.reduce((sum, x) => sum + x, 0) / BENCH_FRAMES, raw_worst_ms: b.rawWorst,
+      frames: b.frames, rounds: b.rounds, median_ms: sorted[b.frames >> 1], worst_ms: sorted[b.frames - 1],
+      mean_ms: sorted.reduce((sum, x) => sum + x, 0) / b.frames, raw_worst_ms: b.rawWorst,
     });
     ui.probe.textContent = JSON.stringify(b.result);
   }
@@ -302,8 +307,9 @@
     }
     game.names = game.api.names().split("\n").filter((s) => s);
     describe();
-    if (window.location.hash === "#bench")
-      game.bench = { best: new Array(BENCH_FRAMES).fill(Infinity), frame: 0, round: 0, rawWorst: 0, done: false, result: null };
+    const plan = benchPlan(window.location.hash);
+    if (plan)
+      game.bench = { ...plan, best: new Array(plan.frames).fill(Infinity), frame: 0, round: 0, rawWorst: 0, done: false, result: null };
     for (const b of [ui.pause, ui.restart, ui.save, ui.check]) b.disabled = false;
     // A clicked button keeps no focus, so that space (a board key) never presses it.
     for (const b of [ui.pause, ui.restart, ui.save, ui.check, ui.speed]) b.addEventListener("click", () => b.blur());
