@@ -72,9 +72,9 @@ std::unique_ptr<GameBoard<double>> ballBesideCircles(bool withC1, Recorder<doubl
 // Two circle bumpers side by side make a V on top, where a ball touches both at W = (6, 10.5 −
 // √(0.75² − 0.5²)). A ball set moving in it is trapped (climbing out takes 3 L/s); friction takes
 // its bounces down to the minimum bounce, which would then rattle it between the circles for as
-// long as the run lasts. It comes to rest instead, touching one circle and within settleRise
-// (0.005 L: docs/physics.md, "Piles") of the other: within settleRise / sin(83.6°) of W, the
-// angle between the normals there. Ballistic only: the classic model's step gains up to ½g²dt² per
+// long as the run lasts. It comes to rest instead, touching one circle and within the minimum
+// bounce's rise, restSpeed²/(2g) = 2e-6 L, of the other: within rise / sin(83.6°) of W, the angle
+// between the normals there. Ballistic only: the classic model's step gains up to ½g²dt² per
 // step and throws the ball out of so shallow a V (the seed's method; docs/physics.md §6).
 TEST(Cradle, ABallRattlingInTheVOfTwoCirclesComesToRestThere) {
   Recorder<double> rec;
@@ -83,8 +83,8 @@ TEST(Cradle, ABallRattlingInTheVOfTwoCirclesComesToRestThere) {
   const Ball<double>& ball = board->ballById(*board->find("B"));
   EXPECT_EQ(ball.velocityAt(board->now()), Vec2<double>());
   const Vec2<double> w(6, 10.5 - std::sqrt(0.75 * 0.75 - 0.5 * 0.5));
-  const double reach = PhysicsParams<double>().settleRise;
-  EXPECT_LE(length(Vec2<double>(ball.positionAt(board->now()) - w)), reach / std::sin(83.6 * M_PI / 180));
+  const double rise = 0.01 * 0.01 / (2 * 25);
+  EXPECT_LE(length(Vec2<double>(ball.positionAt(board->now()) - w)), rise / std::sin(83.6 * M_PI / 180));
 }
 
 // The same ball in the same place without the second circle: one round surface holds nothing,

@@ -215,18 +215,19 @@ bool GameBoard<Real>::roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ign
 }
 
 // The other surface is looked for among the gizmos listed in the cells around the ball, and the
-// walls (listed in none), within settleRise: the height below which a bounce is no bounce is
-// also the gap below which a surface holds (docs/physics.md, "Piles"; the minimum bounce's own
-// rise, 2·10⁻⁶ L, let a ball in a row of balls rattle until its neighbours came that close). A
-// ball at rest is a still surface too: a circle of the ball's radius (every ball is a candidate;
-// a board holds few enough that the grid is not worth it here).
+// walls (listed in none). Within a minimum bounce's rise, restSpeed²/(2|g|): the farthest the
+// bounce that the rule replaces would lift the ball off the surface it struck. (A reach of
+// settleRise rested more piles, and made a ball cradled against a flipper that its own hit
+// triggered rest and wake every 0.4 ns: campaign seed 3162277660, case 99.) A ball at rest
+// (docs/physics.md, "Piles") is a still surface too: a circle of the ball's radius (every ball is
+// a candidate; a board holds few enough that the grid is not worth it here).
 template <class Real>
 bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const {
   if (params_.gravity == Real(0) || !isGizmoId(by)) return false;
   if (!gizmos_[std::size_t(by)]->restingShape() && !ballAtRest(by)) return false;
   const Vec2<Real> gravity(Real(0), params_.gravity);
   const Real r = Ball<Real>::radius();
-  const Real& rise = params_.settleRise;
+  const Real rise = params_.restSpeed * params_.restSpeed / (Real(2) * absOf(params_.gravity));
   auto holds = [&](GizmoId other) {
     if (other == by || other == ball) return false;
     const Shape<Real>* shape = gizmos_[std::size_t(other)]->restingShape();
