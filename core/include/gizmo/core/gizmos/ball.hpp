@@ -182,22 +182,10 @@ class Ball final : public AbstractGizmo<Real> {
         b->comeToRest(board, this->id());
         return;
       }
-      // Pressed slowly onto a ball at rest: that ball is a still surface to it (docs/physics.md,
-      // "Piles"). It rests there when it is held (balanced, or in a V with a second support
-      // at rest), and otherwise alone takes the minimum bounce: a slow hit from above does
-      // not stir a pile.
-      if (b->resting() && dot(effectiveGravity(params), n) < Real(0)) {
-        if (restsOn(*b, pa, n, va, board)) return;
-        board.reportRule(ModelRule::MinimumBounce, this->id(), b->id());
-        setVelocity(now, pa, Vec2<Real>(va + (params.restSpeed - closing) * n), board);
-        return;
-      }
-      if (resting() && dot(b->effectiveGravity(params), n) > Real(0)) {
-        if (b->restsOn(*this, pb, -n, vb, board)) return;
-        board.reportRule(ModelRule::MinimumBounce, b->id(), this->id());
-        b->setVelocity(now, pb, Vec2<Real>(vb - (params.restSpeed - closing) * n), board);
-        return;
-      }
+      // Either may be pressed slowly onto the other at rest (the closing speed is the same
+      // seen from either side).
+      if (meetsBallAtRest(*b, pa, n, va, closing, board)) return;
+      if (b->meetsBallAtRest(*this, pb, -n, vb, closing, board)) return;
       exchange = (params.restSpeed - closing) / Real(2);  // the minimum bounce
       board.reportRule(ModelRule::MinimumBounce, this->id(), b->id());
     } else if (jammed) {
@@ -331,15 +319,21 @@ class Ball final : public AbstractGizmo<Real> {
     return Real(0) < pressing && Real(closing * closing) < Real(Real(2) * params.settleRise * pressing);
   }
 
-  // This ball, at p moving at v, pressed slowly onto `support` (at rest) along n, from the
-  // support towards it: when the support holds it, alone (balanced on its top) or in a V with a
-  // second support at rest, it rests.
-  bool restsOn(const Ball& support, const Vec2<Real>& p, const Vec2<Real>& n, const Vec2<Real>& v,
-               BoardAccess<Real>& board) {
+  // This ball, at p moving at v, in a slow hit (closing along n, from the support towards it) on
+  // a ball at rest that gravity presses it onto: that ball is a still surface to it
+  // (docs/physics.md, "Piles"). It rests there when it is held (balanced on its top, or in a V
+  // with a second support at rest), and otherwise alone takes the minimum bounce: a slow hit from
+  // above does not stir a pile. Returns false when the support is not at rest or not below.
+  bool meetsBallAtRest(const Ball& support, const Vec2<Real>& p, const Vec2<Real>& n, const Vec2<Real>& v,
+                       const Real& closing, BoardAccess<Real>& board) {
     const PhysicsParams<Real>& params = board.params();
-    if (support.captured()) return false;
-    if (!balancedOn(n, v, params) && !board.cradled(this->id(), p, n, support.id())) return false;
-    comeToRest(board, support.id());
+    if (!support.resting() || support.captured() || !(dot(effectiveGravity(params), n) < Real(0))) return false;
+    if (balancedOn(n, v, params) || board.cradled(this->id(), p, n, support.id())) {
+      comeToRest(board, support.id());
+      return true;
+    }
+    board.reportRule(ModelRule::MinimumBounce, this->id(), support.id());
+    setVelocity(board.now(), p, Vec2<Real>(v + (params.restSpeed - closing) * n), board);
     return true;
   }
 
