@@ -253,7 +253,10 @@
     const b = game.bench;
     if (b.done) return;
     b.best[b.frame] = Math.min(b.best[b.frame], game.simMs);
-    b.rawWorst = Math.max(b.rawWorst, game.simMs);
+    if (game.simMs > b.rawWorst) {
+      b.rawWorst = game.simMs;
+      b.rawWorstFrame = b.frame;
+    }
     if (++b.frame < b.frames) return;
     b.result = b.result || { board_time: game.now, events: game.events };
     b.frame = 0;
@@ -265,7 +268,10 @@
     const sorted = b.best.slice().sort((x, y) => x - y);
     Object.assign(b.result, {
       frames: b.frames, rounds: b.rounds, median_ms: sorted[b.frames >> 1], worst_ms: sorted[b.frames - 1],
-      mean_ms: sorted.reduce((sum, x) => sum + x, 0) / b.frames, raw_worst_ms: b.rawWorst,
+      p99_ms: sorted[Math.floor(b.frames * 0.99)], p999_ms: sorted[Math.floor(b.frames * 0.999)],
+      mean_ms: sorted.reduce((sum, x) => sum + x, 0) / b.frames,
+      frames_over_2ms: sorted.filter((x) => x > 2).length, worst_frame: b.best.indexOf(sorted[b.frames - 1]),
+      raw_worst_ms: b.rawWorst, raw_worst_frame: b.rawWorstFrame,
     });
     ui.probe.textContent = JSON.stringify(b.result);
   }
@@ -309,7 +315,7 @@
     describe();
     const plan = benchPlan(window.location.hash);
     if (plan)
-      game.bench = { ...plan, best: new Array(plan.frames).fill(Infinity), frame: 0, round: 0, rawWorst: 0, done: false, result: null };
+      game.bench = { ...plan, best: new Array(plan.frames).fill(Infinity), frame: 0, round: 0, rawWorst: 0, rawWorstFrame: 0, done: false, result: null };
     for (const b of [ui.pause, ui.restart, ui.save, ui.check]) b.disabled = false;
     // A clicked button keeps no focus, so that space (a board key) never presses it.
     for (const b of [ui.pause, ui.restart, ui.save, ui.check, ui.speed]) b.addEventListener("click", () => b.blur());
