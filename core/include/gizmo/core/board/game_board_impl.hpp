@@ -236,10 +236,15 @@ bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real
            });
   };
   if (holds(outerWallsId())) return true;
+  // Between two balls at rest the reach is settleRise: no gizmo's action is in the V, and the
+  // V of two balls of a floor row is so flat that a ball falling into it strikes one side, then
+  // the other, long before either is within a minimum bounce's rise of it while it touches the
+  // first (many-balls: a ball bounced so some 150 times per 1/60 s before it came to rest).
+  const Real ballRise = ballAtRest(by) ? params_.settleRise : rise;
   for (GizmoId other : balls_) {
     if (other == by || other == ball || !ballAtRest(other)) continue;
     const Vec2<Real> d = p - gizmos_[std::size_t(other)]->asBall()->positionAt(now_);
-    const Real most = Real(2) * r + rise, dist2 = lengthSquared(d);
+    const Real most = Real(2) * r + ballRise, dist2 = lengthSquared(d);
     if (Real(0) < dist2 && !(most * most < dist2) && gravityHeldBetween(d, normal, gravity)) return true;
   }
   const CellRange c = cellsOf(Box<Real>::around(p, r + rise));
@@ -488,14 +493,15 @@ void GameBoard<Real>::applyEvent(const Event<Real>& e) {
 }
 
 // A ball that leaves rest wakes every ball at rest that it may hold up (docs/physics.md,
-// "Piles"): one touching it, within the broad phase's margin, with the mover on gravity's side
-// of it. A woken ball leaves rest in turn, so a pile wakes from the bottom up. A ball that only
-// touches the mover from beside or below wakes too when gravity leans on the mover at all: it
-// costs a few events (it settles again), where missing one would leave it hanging in the air.
+// "Piles"): one within settleRise of it (the reach of a V of two balls), with the mover on
+// gravity's side of it. A woken ball leaves rest in turn, so a pile wakes from the bottom up. A
+// ball that only touches the mover from beside or below wakes too when gravity leans on the mover
+// at all: it costs a few events (it settles again), where missing one would leave it hanging in
+// the air.
 template <class Real>
 void GameBoard<Real>::wakeWhatRestsOnStarted() {
   const Real r = Ball<Real>::radius();
-  const Real reach = Real(2) * r + fromDouble<Real>(detail::kBroadPhaseMargin);
+  const Real reach = Real(2) * r + params_.settleRise;
   const Vec2<Real> gravity(Real(0), params_.gravity);
   for (std::size_t i = 0; i < recompute_.size(); ++i) {
     if (!isBallId(recompute_[i])) continue;
