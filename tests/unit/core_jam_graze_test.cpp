@@ -32,6 +32,7 @@ class JammedBoard final : public BoardAccess<double> {
   void releaseContactsOn(GizmoId) override {}
   bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return true; }
   bool cradled(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
+  bool boxedAlong(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
   void performAction(GizmoId) override {}
   GizmoId spawnBall(const Vec2<double>&) override { return kNoGizmo; }
 

@@ -172,6 +172,47 @@ TEST(Piles, ABallInTheFlatVOfTwoBallsAtRestComesToRest) {
   EXPECT_GT(narrow->rec.ofKind(EventKind::Collision).size(), 10 * hits);
 }
 
+// Squares 2 L apart from y = 12 down, nine balls dropped into them: four fill the floor exactly
+// (one is squeezed up out of the row), four stand on them, and both rows would pass momentum
+// between the walls across room of 10⁻⁶ L (before the rule for rows: 20 s took over 25 s of wall
+// time in the ballistic model).
+TEST(Piles, RowsThatFillABoxComeToRest) {
+  for (const MotionModel model : {MotionModel::Ballistic, MotionModel::Classic}) {
+    BoardSpec s = emptyBoard(25, 0.5, 0.5);
+    for (int y = 12; y < 20; ++y) {
+      s.gizmos.push_back(gizmoAt(GizmoType::Square, "L" + std::to_string(y), 4, y));
+      s.gizmos.push_back(gizmoAt(GizmoType::Square, "R" + std::to_string(y), 7, y));
+    }
+    for (int i = 0; i < 9; ++i)
+      s.balls.push_back(ballAt("B" + std::to_string(i), 5.35 + 0.65 * (i % 3), 14.4 + 0.6 * (i / 3), 0.5 - 0.3 * (i % 3), 0));
+    auto board = build(s, model);
+    Recorder<double> rec;
+    board->setObserver(&rec);
+    board->tick(20.0);
+    for (GizmoId id : board->ballIds()) EXPECT_TRUE(board->ballById(id).resting()) << motionModelName(model);
+    EXPECT_LT(board->executedTotal(), 40000u) << motionModelName(model);
+  }
+}
+
+// A row of three balls on the floor against a square, struck by a ball rolling in from open floor
+// at 0.3 L/s: the row has no room ahead, but the ball that strikes it has room behind, so the hit
+// passes along the row to the square and back, and the striker rolls away as fast as it came.
+TEST(Piles, ARowWithRoomBehindTheStrikerPassesTheHitOn) {
+  BoardSpec s = emptyBoard(25, 0, 0);
+  s.gizmos.push_back(gizmoAt(GizmoType::Square, "Q", 4, 19));  // its face at x = 5
+  s.balls.push_back(ballAt("B1", 5.25, 19.75));
+  s.balls.push_back(ballAt("B2", 5.75, 19.75));
+  s.balls.push_back(ballAt("B3", 6.25, 19.75));
+  s.balls.push_back(ballAt("S", 8.0, 19.75, -0.3, 0));
+  auto board = build(s, MotionModel::Ballistic);
+  Recorder<double> rec;
+  board->setObserver(&rec);
+  board->tick(12.0);
+  const Ball<double>& striker = board->ballById(*board->find("S"));
+  EXPECT_NEAR(striker.velocityAt(board->now()).x, 0.3, 1e-9);
+  EXPECT_EQ(rec.countRule(ModelRule::Wedged), 0);
+}
+
 // A ball B wedged between a still flipper's side and a triangle's slope, and a ball C that slid
 // down the slope onto it and rests in the V of B and the slope: held up by B alone.
 TEST(Piles, ABallThatLeavesRestWakesWhatRestsOnIt) {

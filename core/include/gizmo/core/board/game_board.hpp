@@ -127,6 +127,7 @@ class GameBoard final : private BoardAccess<Real> {
   void releaseContactsOn(GizmoId g) override { starting_.push_back(g); }
   bool roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const override;
   bool cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const override;
+  bool boxedAlong(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& m, GizmoId behind) const override;
   bool ballAtRest(GizmoId id) const;
   bool jammed() const override { return collisionsInWindow_ > kJamThreshold; }
   GizmoId spawnBall(const Vec2<Real>& p) override;

@@ -255,6 +255,59 @@ bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real
   return false;
 }
 
+// The line is followed from ball to ball (the nearest slow one ahead, within 30° of m; ties to
+// the lower id) and ends when a still gizmo or the walls lie ahead within settleRise. Slow: a
+// speed that would rise less than settleRise against gravity. Products and comparisons only.
+template <class Real>
+bool GameBoard<Real>::boxedAlong(GizmoId ball, const Vec2<Real>& start, const Vec2<Real>& m, GizmoId behind) const {
+  if (params_.gravity == Real(0)) return false;
+  const Real r = Ball<Real>::radius();
+  const Real reach = params_.settleRise;
+  const Real slow2 = Real(2) * params_.settleRise * absOf(params_.gravity);
+  // `towards` points from an obstacle to the ball: the obstacle lies ahead, within 30° of m.
+  auto ahead = [&](const Vec2<Real>& towards) {
+    const Real along = -dot(towards, m);
+    return Real(0) < along && !(Real(4) * along * along < Real(3) * lengthSquared(towards));
+  };
+  const Real most = Real(2) * r + reach;
+  GizmoId current = ball;
+  Vec2<Real> p = start;
+  // Each link advances along m by at least √3·r, so a line is shorter than the board is wide;
+  // the count of balls bounds it whatever the geometry.
+  for (std::size_t links = 0; links <= balls_.size(); ++links) {
+    auto stillAhead = [&](GizmoId g) {
+      const Shape<Real>* shape = gizmos_[std::size_t(g)]->restingShape();
+      return shape && anyFeatureWithin(*shape, p, r, reach, ahead);
+    };
+    if (stillAhead(outerWallsId())) return true;
+    const CellRange c = cellsOf(Box<Real>::around(p, r + reach));
+    for (int y = c.y0; y <= c.y1; ++y)
+      for (int x = c.x0; x <= c.x1; ++x)
+        for (GizmoId g : grid_[std::size_t(y * kBoardSize + x)])
+          if (stillAhead(g)) return true;
+    GizmoId next = kNoGizmo;
+    Vec2<Real> nextAt;
+    Real nearest2(0);
+    forEachBallNear(Box<Real>::around(p, most + r), [&](GizmoId other) {
+      if (other == current || other == behind || other == ball) return;
+      const Ball<Real>& o = *gizmos_[std::size_t(other)]->asBall();
+      if (o.captured() || !(lengthSquared(o.velocityAt(now_)) < slow2)) return;
+      const Vec2<Real> q = o.positionAt(now_);
+      const Real dist2 = lengthSquared(Vec2<Real>(q - p));
+      if (most * most < dist2 || !ahead(Vec2<Real>(p - q))) return;
+      if (next == kNoGizmo || dist2 < nearest2 || (dist2 == nearest2 && other < next)) {
+        next = other;
+        nextAt = q;
+        nearest2 = dist2;
+      }
+    });
+    if (next == kNoGizmo) return false;
+    current = next;
+    p = nextAt;
+  }
+  return false;
+}
+
 template <class Real>
 bool GameBoard<Real>::ballAtRest(GizmoId id) const {
   const Ball<Real>* b = gizmos_[std::size_t(id)]->asBall();

@@ -63,6 +63,11 @@ class BoardAccess {
   // and another gizmo are still surfaces it can rest against, the other within a minimum
   // bounce's rise of it, and gravity is held between the two (geometry/cradle.hpp).
   virtual bool cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const = 0;
+  // Whether a ball centred at p has no room along the unit direction m: a line of slow balls
+  // ahead of it, each within settleRise of the one before and within 30° of straight ahead along
+  // m, ends within settleRise of a still surface (docs/physics.md, "Piles": a row with no room).
+  // `behind` is not part of the line (the ball on the other side of the hit).
+  virtual bool boxedAlong(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& m, GizmoId behind) const = 0;
   // Gizmo `target` performs its action now, as a trigger would make it, and the log records it
   // as an action (a gizmo that acts on its own hits, like the spinner).
   virtual void performAction(GizmoId target) = 0;

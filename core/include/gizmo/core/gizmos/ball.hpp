@@ -172,6 +172,13 @@ class Ball final : public AbstractGizmo<Real> {
       rememberJamMeeting(b->id(), now, JamMeeting::Hit);
       b->rememberJamMeeting(this->id(), now, JamMeeting::Hit);
     }
+    if (!jammed && rowWithoutRoom(*b, pa, pb, va, vb, n, closing, board)) {
+      // Neither can move along n by more than settleRise: both come to rest, as two jammed
+      // balls that gravity presses together do.
+      comeToRest(board, b->id());
+      b->comeToRest(board, this->id());
+      return;
+    }
     Real exchange = -closing;  // added to a along n, taken from b
     const Real pressing = -dot(Vec2<Real>(effectiveGravity(params) - b->effectiveGravity(params)), n);
     const bool pressedTogether = Real(0) < pressing;
@@ -317,6 +324,22 @@ class Ball final : public AbstractGizmo<Real> {
   // rises closing²/(2·pressing). Products only, so that exact scalars decide it too.
   static bool settles(const Real& closing, const Real& pressing, const PhysicsParams<Real>& params) {
     return Real(0) < pressing && Real(closing * closing) < Real(Real(2) * params.settleRise * pressing);
+  }
+
+  // A row with no room (docs/physics.md, "Piles"): this ball at pa, moving at va, strikes b (at
+  // pb, moving at vb) along n (from b towards this one), both slowly, and a line of balls leads
+  // from b to a still surface ahead and from this one to a still surface behind, within
+  // settleRise at every link. Elastic, the hit would pass momentum along the line and back,
+  // each pass crossing the line's little room, for as long as friction takes to slow the balls
+  // below restSpeed: two balls that fill the gap between two gizmos, a row that fills a floor.
+  // Slow: a speed that would rise less than settleRise against gravity, the scale of `settles`.
+  bool rowWithoutRoom(const Ball& b, const Vec2<Real>& pa, const Vec2<Real>& pb, const Vec2<Real>& va,
+                      const Vec2<Real>& vb, const Vec2<Real>& n, const Real& closing,
+                      const BoardAccess<Real>& board) const {
+    const PhysicsParams<Real>& params = board.params();
+    const Real slow2 = Real(2) * params.settleRise * absOf(params.gravity);
+    if (!(Real(closing * closing) < slow2) || !(lengthSquared(va) < slow2) || !(lengthSquared(vb) < slow2)) return false;
+    return board.boxedAlong(b.id(), pb, Vec2<Real>(-n), this->id()) && board.boxedAlong(this->id(), pa, n, b.id());
   }
 
   // This ball, at p moving at v, in a slow hit (closing along n, from the support towards it) on
