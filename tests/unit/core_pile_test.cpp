@@ -16,20 +16,25 @@ using test::emptyBoard;
 using test::gizmoAt;
 using test::Recorder;
 
-// A ball dropped onto the floor from `height` (its lowest point above the floor), no friction:
-// the first hit is at √(2·25·height) L/s.
-struct Drop {
+// A board run for `seconds` (ballistic, ticks of 0.05 s unless p says otherwise), its events kept.
+struct Watched {
   std::unique_ptr<GameBoard<double>> board;
   Recorder<double> rec;
 };
-std::unique_ptr<Drop> dropOntoTheFloor(double height) {
-  auto d = std::make_unique<Drop>();
+std::unique_ptr<Watched> watch(const BoardSpec& s, const PhysicsParams<double>& p, double seconds) {
+  auto w = std::make_unique<Watched>();
+  w->board = buildBoard<double>(s, p);
+  w->board->setObserver(&w->rec);
+  w->board->tick(seconds);
+  return w;
+}
+
+// A ball dropped onto the floor from `height` (its lowest point above the floor), no friction:
+// the first hit is at √(2·25·height) L/s.
+std::unique_ptr<Watched> dropOntoTheFloor(double height) {
   BoardSpec s = emptyBoard(25, 0, 0);
   s.balls.push_back(ballAt("B", 10, 19.75 - height));
-  d->board = build(s, MotionModel::Ballistic);
-  d->board->setObserver(&d->rec);
-  d->board->tick(0.5);
-  return d;
+  return watch(s, PhysicsParams<double>{}, 0.5);
 }
 
 TEST(Piles, ABounceThatWouldRiseLessThanSettleRiseIsNone) {
@@ -138,22 +143,14 @@ TEST(Piles, BallsDroppedIntoABoxComeToRestAndStayAtRest) {
 // Two balls at rest on the floor 0.998 L apart (their V has sides 3.6° from level, the shape of a
 // floor row with one ball squeezed out of it), and a ball that falls 0.001 L onto one of them,
 // 0.001 L from the V's middle: it strikes A 0.002 L from C.
-struct FlatV {
-  std::unique_ptr<GameBoard<double>> board;
-  Recorder<double> rec;
-};
-std::unique_ptr<FlatV> ballFallingIntoAFlatV(double settleRise) {
-  auto v = std::make_unique<FlatV>();
+std::unique_ptr<Watched> ballFallingIntoAFlatV(double settleRise) {
   BoardSpec s = emptyBoard(25, 0.025, 0.025);
   s.balls.push_back(ballAt("A", 10.0, 19.75));
   s.balls.push_back(ballAt("C", 10.998, 19.75));
   s.balls.push_back(ballAt("B", 10.498, 19.75 - std::sqrt(0.25 - 0.498 * 0.498) - 0.001));
   PhysicsParams<double> p;
   p.settleRise = settleRise;
-  v->board = buildBoard<double>(s, p);
-  v->board->setObserver(&v->rec);
-  v->board->tick(5.0);
-  return v;
+  return watch(s, p, 5.0);
 }
 
 TEST(Piles, ABallInTheFlatVOfTwoBallsAtRestComesToRest) {
@@ -185,12 +182,11 @@ TEST(Piles, RowsThatFillABoxComeToRest) {
     }
     for (int i = 0; i < 9; ++i)
       s.balls.push_back(ballAt("B" + std::to_string(i), 5.35 + 0.65 * (i % 3), 14.4 + 0.6 * (i / 3), 0.5 - 0.3 * (i % 3), 0));
-    auto board = build(s, model);
-    Recorder<double> rec;
-    board->setObserver(&rec);
-    board->tick(20.0);
-    for (GizmoId id : board->ballIds()) EXPECT_TRUE(board->ballById(id).resting()) << motionModelName(model);
-    EXPECT_LT(board->executedTotal(), 40000u) << motionModelName(model);
+    PhysicsParams<double> p;
+    p.model = model;
+    const auto w = watch(s, p, 20.0);
+    for (GizmoId id : w->board->ballIds()) EXPECT_TRUE(w->board->ballById(id).resting()) << motionModelName(model);
+    EXPECT_LT(w->board->executedTotal(), 40000u) << motionModelName(model);
   }
 }
 
@@ -204,13 +200,10 @@ TEST(Piles, ARowWithRoomBehindTheStrikerPassesTheHitOn) {
   s.balls.push_back(ballAt("B2", 5.75, 19.75));
   s.balls.push_back(ballAt("B3", 6.25, 19.75));
   s.balls.push_back(ballAt("S", 8.0, 19.75, -0.3, 0));
-  auto board = build(s, MotionModel::Ballistic);
-  Recorder<double> rec;
-  board->setObserver(&rec);
-  board->tick(12.0);
-  const Ball<double>& striker = board->ballById(*board->find("S"));
-  EXPECT_NEAR(striker.velocityAt(board->now()).x, 0.3, 1e-9);
-  EXPECT_EQ(rec.countRule(ModelRule::Wedged), 0);
+  const auto w = watch(s, PhysicsParams<double>{}, 12.0);
+  const Ball<double>& striker = w->board->ballById(*w->board->find("S"));
+  EXPECT_NEAR(striker.velocityAt(w->board->now()).x, 0.3, 1e-9);
+  EXPECT_EQ(w->rec.countRule(ModelRule::Wedged), 0);
 }
 
 // A ball B wedged between a still flipper's side and a triangle's slope, and a ball C that slid
