@@ -239,7 +239,7 @@ bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real
   // Between two balls at rest the reach is settleRise: no gizmo's action is in the V, and the
   // V of two balls of a floor row is so flat that a ball falling into it strikes one side, then
   // the other, long before either is within a minimum bounce's rise of it while it touches the
-  // first (many-balls: a ball bounced so some 150 times per 1/60 s before it came to rest).
+  // first (many-balls: such a ball struck its two sides about 150 times per 1/60 s before it rested).
   const Real ballRise = ballAtRest(by) ? params_.settleRise : rise;
   for (GizmoId other : balls_) {
     if (other == by || other == ball || !ballAtRest(other)) continue;

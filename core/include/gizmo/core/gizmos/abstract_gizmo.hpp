@@ -61,7 +61,8 @@ class BoardAccess {
   virtual bool roomForBall(const Vec2<Real>& p, GizmoId ball, GizmoId ignore) const = 0;
   // Whether a ball centred at p, struck slowly by gizmo `by` along `normal`, lies in a V: `by`
   // and another gizmo are still surfaces it can rest against, the other within a minimum
-  // bounce's rise of it, and gravity is held between the two (geometry/cradle.hpp).
+  // bounce's rise of it (settleRise when both are balls at rest), and gravity is held between
+  // the two (geometry/cradle.hpp).
   virtual bool cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real>& normal, GizmoId by) const = 0;
   // Whether a ball centred at p has no room along the unit direction m: a line of slow balls
   // ahead of it, each within settleRise of the one before and within 30° of straight ahead along
