@@ -166,6 +166,8 @@ class GameBoard final : private BoardAccess<Real> {
   void placeBall(GizmoId id, bool inGrid);
   template <class Visit>
   void forEachBallNear(const Box<Real>& box, Visit visit) const;
+  template <class Accept>
+  bool stillFeatureNear(const Vec2<Real>& p, const Real& reach, GizmoId except, Accept accept) const;
   Real frictionTickTime(Ball<Real>& ball) const;
   Real infinity() const;
 

@@ -83,6 +83,27 @@ void GameBoard<Real>::forEachBallNear(const Box<Real>& box, Visit visit) const {
   for (GizmoId ballId : wideBalls_) visit(ballId);
 }
 
+// Whether a still gizmo other than `except` (the walls, listed in no cell, or one listed in the
+// cells around p) has a feature within `reach` of a ball centred at p that `accept` takes, given
+// the direction from the feature towards the ball (geometry/cradle.hpp's anyFeatureWithin).
+template <class Real>
+template <class Accept>
+bool GameBoard<Real>::stillFeatureNear(const Vec2<Real>& p, const Real& reach, GizmoId except, Accept accept) const {
+  const Real r = Ball<Real>::radius();
+  auto near = [&](GizmoId g) {
+    if (g == except) return false;
+    const Shape<Real>* shape = gizmos_[std::size_t(g)]->restingShape();
+    return shape && anyFeatureWithin(*shape, p, r, reach, accept);
+  };
+  if (near(outerWallsId())) return true;
+  const CellRange c = cellsOf(Box<Real>::around(p, r + reach));
+  for (int y = c.y0; y <= c.y1; ++y)
+    for (int x = c.x0; x <= c.x1; ++x)
+      for (GizmoId g : grid_[std::size_t(y * kBoardSize + x)])
+        if (near(g)) return true;
+  return false;
+}
+
 template <class Real>
 GameBoard<Real>::GameBoard(const PhysicsParams<Real>& params) : params_(params) {
   add(std::make_unique<OuterWalls<Real>>());
@@ -228,14 +249,10 @@ bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real
   const Vec2<Real> gravity(Real(0), params_.gravity);
   const Real r = Ball<Real>::radius();
   const Real rise = params_.restSpeed * params_.restSpeed / (Real(2) * absOf(params_.gravity));
-  auto holds = [&](GizmoId other) {
-    if (other == by || other == ball) return false;
-    const Shape<Real>* shape = gizmos_[std::size_t(other)]->restingShape();
-    return shape && anyFeatureWithin(*shape, p, r, rise, [&](const Vec2<Real>& towardsBall) {
-             return gravityHeldBetween(towardsBall, normal, gravity);
-           });
-  };
-  if (holds(outerWallsId())) return true;
+  if (stillFeatureNear(p, rise, by, [&](const Vec2<Real>& towardsBall) {
+        return gravityHeldBetween(towardsBall, normal, gravity);
+      }))
+    return true;
   // Between two balls at rest the reach is settleRise: no gizmo's action is in the V, and the
   // V of two balls of a floor row is so flat that a ball falling into it strikes one side, then
   // the other, long before either is within a minimum bounce's rise of it while it touches the
@@ -247,11 +264,6 @@ bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real
     const Real most = Real(2) * r + ballRise, dist2 = lengthSquared(d);
     if (Real(0) < dist2 && !(most * most < dist2) && gravityHeldBetween(d, normal, gravity)) return true;
   }
-  const CellRange c = cellsOf(Box<Real>::around(p, r + rise));
-  for (int y = c.y0; y <= c.y1; ++y)
-    for (int x = c.x0; x <= c.x1; ++x)
-      for (GizmoId g : grid_[std::size_t(y * kBoardSize + x)])
-        if (holds(g)) return true;
   return false;
 }
 
@@ -275,16 +287,7 @@ bool GameBoard<Real>::boxedAlong(GizmoId ball, const Vec2<Real>& start, const Ve
   // Each link advances along m by at least √3·r, so a line is shorter than the board is wide;
   // the count of balls bounds it whatever the geometry.
   for (std::size_t links = 0; links <= balls_.size(); ++links) {
-    auto stillAhead = [&](GizmoId g) {
-      const Shape<Real>* shape = gizmos_[std::size_t(g)]->restingShape();
-      return shape && anyFeatureWithin(*shape, p, r, reach, ahead);
-    };
-    if (stillAhead(outerWallsId())) return true;
-    const CellRange c = cellsOf(Box<Real>::around(p, r + reach));
-    for (int y = c.y0; y <= c.y1; ++y)
-      for (int x = c.x0; x <= c.x1; ++x)
-        for (GizmoId g : grid_[std::size_t(y * kBoardSize + x)])
-          if (stillAhead(g)) return true;
+    if (stillFeatureNear(p, reach, kNoGizmo, ahead)) return true;
     GizmoId next = kNoGizmo;
     Vec2<Real> nextAt;
     Real nearest2(0);
