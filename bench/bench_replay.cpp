@@ -3,11 +3,13 @@
 // chunk's digest, or comparing every record), seeking to the middle of a long log, and the log's
 // size per executed event.
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <string>
 
 #include "bench_boards.hpp"
 #include "gizmo/replay/replay.hpp"
@@ -34,8 +36,11 @@ class CountingSink final : public replay::ChunkSink {
   std::uint64_t bytes = 0;
 };
 
+// The process id keeps two benchmark runs on one machine (a CI run beside a developer's) apart.
 std::string logPath(const char* name) {
-  return (std::filesystem::temp_directory_path() / (std::string("gizmo-bench-") + name + ".gzlog")).string();
+  return (std::filesystem::temp_directory_path() /
+          ("gizmo-bench-" + std::to_string(::getpid()) + "-" + name + ".gzlog"))
+      .string();
 }
 
 void counters(benchmark::State& state, std::uint64_t events, std::uint64_t bytes) {

@@ -14,6 +14,7 @@
 #include "gizmo/verify/fuzz/run_generator.hpp"
 #include "gizmo/verify/fuzz/run_shrinker.hpp"
 #include "gizmo/verify/fuzz/seeded_random.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace gizmo::verify::fuzz {
 namespace {
@@ -39,8 +40,8 @@ TEST(FuzzCampaign, SameResultOnAnyNumberOfThreads) {
 }
 
 TEST(FuzzCampaign, MergedShardsEqualOneRun) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gizmo-fuzz-campaign-test";
-  std::filesystem::remove_all(dir);
+  const test::ScratchDir scratch;
+  const std::filesystem::path dir = scratch / "campaign";  // written by writeCampaign
   CampaignResult whole = runCampaign(smallCampaign());
   std::vector<std::pair<std::string, CampaignResult>> parts;
   for (std::uint64_t k = 0; k < 3; ++k) {
@@ -63,14 +64,13 @@ TEST(FuzzCampaign, MergedShardsEqualOneRun) {
   // A shard missing, or one given twice, is refused.
   EXPECT_THROW(mergeCampaigns({parts[0], parts[1]}), CampaignError);
   EXPECT_THROW(mergeCampaigns({parts[0], parts[1], parts[2], parts[1]}), CampaignError);
-  std::filesystem::remove_all(dir);
 }
 
 // What a killed or timed-out task leaves must not merge as if whole: a results file cut short at
 // a line's end is refused, and a shard stopped early reads back as incomplete, with its counts.
 TEST(FuzzCampaign, ResultsCutShortOrStoppedEarlyAreNotWhole) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gizmo-fuzz-cut-test";
-  std::filesystem::remove_all(dir);
+  const test::ScratchDir scratch;
+  const std::filesystem::path dir = scratch / "campaign";  // written by writeCampaign
   CampaignOptions o = smallCampaign();
   o.shard = 1, o.shards = 2;
   CampaignResult whole = runCampaign(o);
@@ -102,7 +102,6 @@ TEST(FuzzCampaign, ResultsCutShortOrStoppedEarlyAreNotWhole) {
   EXPECT_EQ(casesChecked(early), 0u);
   EXPECT_EQ(casesPlanned(early), 6u);
   EXPECT_NE(summaryLine(early).find("(stopped early)"), std::string::npos);
-  std::filesystem::remove_all(dir);
 }
 
 // A campaign of one case, 0 of seed 4, whose energy property failed (made up), shaped by `adjust`.
@@ -122,8 +121,8 @@ CampaignResult oneMadeUpFailure(Adjust adjust) {
 // A failure's folder: the shrunk board, its key script, its log, what failed, and the command
 // that checks it again; and results.txt names the folder and reads back.
 TEST(FuzzCampaign, WritesEachFailureWithItsCommand) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gizmo-fuzz-failure-test";
-  std::filesystem::remove_all(dir);
+  const test::ScratchDir scratch;
+  const std::filesystem::path dir = scratch / "campaign";  // written by writeCampaign
   CampaignResult r = oneMadeUpFailure([](CaseOutcome& c) { c.minimal.keys = {TimedKey{0.1, 32, KeyDirection::Down}}; });
   writeCampaign(r, dir.string(), "gizmo");
   const std::filesystem::path folder = dir / "failures" / "energy-case0";
@@ -140,14 +139,13 @@ TEST(FuzzCampaign, WritesEachFailureWithItsCommand) {
   EXPECT_FALSE(back.outcomes[0].holds);
   EXPECT_EQ(back.outcomes[0].folder, "failures/energy-case0");
   EXPECT_EQ(summaryLine(back), summaryLine(r));
-  std::filesystem::remove_all(dir);
 }
 
 // A failure seen at a known time keeps a log of the run up to the end of that tick only: a late
 // failure in a crowded run would otherwise write hundreds of megabytes.
 TEST(FuzzCampaign, AFailuresLogEndsWithTheTickOfTheFailure) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gizmo-fuzz-failure-cut-test";
-  std::filesystem::remove_all(dir);
+  const test::ScratchDir scratch;
+  const std::filesystem::path dir = scratch / "campaign";  // written by writeCampaign
   CampaignResult r = oneMadeUpFailure([](CaseOutcome& c) {
     c.minimal.duration = 1;
     c.minimal.maxTick = 0.05;
@@ -165,7 +163,6 @@ TEST(FuzzCampaign, AFailuresLogEndsWithTheTickOfTheFailure) {
   std::string line;
   std::getline(command, line);
   EXPECT_NE(line.find("--time 1"), std::string::npos) << line;
-  std::filesystem::remove_all(dir);
 }
 
 // A property that fails as soon as a board holds a circle bumper: the greedy minimiser must end

@@ -5,6 +5,7 @@
 
 #include "gizmo/io/key_script.hpp"
 #include "io_test_util.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace gizmo::io {
 namespace {
@@ -84,9 +85,7 @@ TEST(KeyScript, EveryErrorIsReported) {
 }
 
 TEST(KeyScript, Files) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("gizmo-key-script-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-  std::filesystem::create_directories(dir);
+  const gizmo::test::ScratchDir dir;
   const std::string path = (dir / "run.keys").string();
   writeFile(path, "0.5 down 32\n0.75 up 32\n");
   const auto in = readKeyScriptFile(path);
@@ -95,7 +94,6 @@ TEST(KeyScript, Files) {
   const std::string missing = (dir / "missing.keys").string();
   EXPECT_EQ(errorsOf([&] { readKeyScriptFile(missing); }),
             (std::vector<std::string>{missing + ": error: cannot read the file: it does not exist"}));
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "gizmo/io/text_reader.hpp"
 #include "gizmo/io/xml_reader.hpp"
 #include "io_test_util.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace gizmo::io {
 namespace {
@@ -637,34 +638,23 @@ TEST(TextFixtures, LenientFilesLoadWithTheirExpectedWarnings) {
 // ---------------------------------------------------------------------------------------------
 // readBoardFile and readBoardString.
 
-struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    path = std::filesystem::temp_directory_path() /
-           ("gizmo-io-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(path);
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() { std::filesystem::remove_all(path); }
-};
 
 TEST(BoardFile, FileProblems) {
-  TempDir dir;
-  const std::string missing = (dir.path / "missing.txt").string();
+  const gizmo::test::ScratchDir dir;
+  const std::string missing = (dir.path() / "missing.txt").string();
   EXPECT_EQ(errorsOf([&] { readBoardFile(missing); }),
             (std::vector<std::string>{missing + ": error: cannot read the file: it does not exist"}));
-  EXPECT_EQ(errorsOf([&] { readBoardFile(dir.path.string()); }),
-            (std::vector<std::string>{dir.path.string() + ": error: cannot read the file: it is a directory"}));
-  const std::string binary = (dir.path / "binary.txt").string();
+  EXPECT_EQ(errorsOf([&] { readBoardFile(dir.path().string()); }),
+            (std::vector<std::string>{dir.path().string() + ": error: cannot read the file: it is a directory"}));
+  const std::string binary = (dir.path() / "binary.txt").string();
   writeFile(binary, std::string("Square S 1 1\nSq\0are", 19));
   EXPECT_EQ(errorsOf([&] { readBoardFile(binary); }),
             (std::vector<std::string>{binary + ":2:3: error: the file contains a NUL byte: it is not a text file"}));
-  const std::string big = (dir.path / "big.txt").string();
+  const std::string big = (dir.path() / "big.txt").string();
   writeFile(big, std::string((std::size_t{16} << 20) + 1, ' '));
   EXPECT_EQ(errorsOf([&] { readBoardFile(big); }),
             (std::vector<std::string>{big + ": error: the file is larger than 16 MiB, the limit for board files"}));
-  const std::string good = (dir.path / "good.txt").string();
+  const std::string good = (dir.path() / "good.txt").string();
   writeFile(good, "Square S 1 1\n");
   EXPECT_EQ(readBoardFile(good).board.gizmos.size(), 1u);
 }

@@ -21,6 +21,7 @@
 #include "gizmo/replay/recorder.hpp"
 #include "gizmo/replay/replay.hpp"
 #include "support/fixture_request.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace {
 
@@ -48,9 +49,7 @@ std::vector<TimedKey> keysOver(double seconds) {
 }
 
 void liveLogsMatchRecordedOnes(MotionModel model, double seconds, int saveEvery) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("gizmo-live-recording-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-  std::filesystem::create_directories(dir);
+  const test::ScratchDir dir;
   const std::string again = (dir / "again.gzlog").string();
   std::vector<std::uint8_t> live;
   const PrecisionChoice precision{Precision::Double, 0};
@@ -100,7 +99,6 @@ void liveLogsMatchRecordedOnes(MotionModel model, double seconds, int saveEvery)
   EXPECT_GT(report.events, 1000u);
   EXPECT_GT(saves, 10);
   EXPECT_GE(savesAfterAClose, 3) << "no chunk closed while the run went on: no save just after one";
-  std::filesystem::remove_all(dir);
 }
 
 TEST(ReplayLiveRecording, ALogWrittenMidRunIsTheLogOfTheRunToThatMoment) {

@@ -12,6 +12,7 @@
 #include "gizmo/verify/study_kernels.hpp"
 #include "gizmo/verify/study_output.hpp"
 #include "gizmo/verify/study_suite.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace gizmo::verify {
 namespace {
@@ -155,8 +156,7 @@ TEST(StudyBench, BadFilesAreRefusedWithTheFileAndWhatIsWrong) {
 }
 
 TEST(StudyBench, FilesAreReadInOrderAndABenchmarkIsInOneFileOnly) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gizmo-study-bench-test";
-  std::filesystem::create_directories(dir);
+  const test::ScratchDir dir;
   const std::string a = (dir / "a.json").string(), b = (dir / "b.json").string(), c = (dir / "c.json").string();
   std::ofstream(a) << benchJson({entry("BM_A", "iteration", 1, "ns")});
   std::ofstream(b) << benchJson({entry("BM_B", "iteration", 2, "ns")});
@@ -179,7 +179,6 @@ TEST(StudyBench, FilesAreReadInOrderAndABenchmarkIsInOneFileOnly) {
     EXPECT_NE(std::string(e.what()).find("missing.json: cannot read the file"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(readBenchFiles({}).empty());
-  std::filesystem::remove_all(dir);
 }
 
 TEST(StudyKernels, TimeOfImpactIsPerFeatureModelAndPrecisionWithItsRatioToDouble) {

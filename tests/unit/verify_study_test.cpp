@@ -11,6 +11,7 @@
 #include "gizmo/verify/study_findings.hpp"
 #include "gizmo/verify/study_suite.hpp"
 #include "support/paths.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace gizmo::verify {
 namespace {
@@ -61,13 +62,12 @@ TEST(StudySuite, BuiltInSuiteHasMainAndStressScenesAndAQuickSubset) {
 }
 
 TEST(StudySuite, BadManifestsAreRefusedWithTheirLine) {
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "gizmo-study-suite-test";
-  std::filesystem::create_directories(dir);
+  const test::ScratchDir dir;
   std::ofstream(dir / "ball.txt") << "Ball B 5 5 1 0\n";
   auto refuse = [&](const std::string& manifest, const std::string& message) {
     std::ofstream(dir / kSuiteManifest) << manifest;
     try {
-      loadSuite(dir.string(), false);
+      loadSuite(dir.path().string(), false);
       ADD_FAILURE() << "accepted: " << manifest;
     } catch (const StudyInputError& e) {
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
@@ -81,8 +81,7 @@ TEST(StudySuite, BadManifestsAreRefusedWithTheirLine) {
   refuse("board a ball.txt\n", "unknown line 'board'");
   refuse("# nothing\n", "names no scene");
   std::ofstream(dir / kSuiteManifest) << "scene a ball.txt 1 0 0.1 main\n";
-  EXPECT_THROW(loadSuite(dir.string(), true), StudyInputError);  // no quick scene
-  std::filesystem::remove_all(dir);
+  EXPECT_THROW(loadSuite(dir.path().string(), true), StudyInputError);  // no quick scene
 }
 
 TEST(StudySuite, SamplingMustFallOnEveryTickBoundary) {
