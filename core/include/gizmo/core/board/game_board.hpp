@@ -156,6 +156,9 @@ class GameBoard final : private BoardAccess<Real> {
   void computePair(GizmoId ball, GizmoId other);
   void gatherCandidates(GizmoId ball, std::vector<GizmoId>& out);
   Real ballHorizon(Ball<Real>& b) const;
+  void sweepBall(GizmoId ball, const Real& until);
+  Real nextEventHorizon();
+  void coverUntilNextEvent();
   bool frictionTicks() const;
   struct CellRange {
     int x0, x1, y0, y1;  // inclusive; empty when x1 < x0

@@ -423,6 +423,7 @@ void GameBoard<Real>::tickUntil(const Real& end) {
     schedule(EventKind::Input, in.time, kNoGizmo, static_cast<GizmoId>(in.direction), in.key);
   }
   for (;;) {
+    if (params_.model == MotionModel::Classic) coverUntilNextEvent();
     if (limited_ && (limit_.events <= executedTotal_ || (limit_.time && *limit_.time < queue_.top().time))) {
       stopped_ = true;
       return;
@@ -654,21 +655,18 @@ void GameBoard<Real>::recomputePending() {
       if (observer_) observer_->eventRemoved(e);
     });
 
-  // Where each recomputed gizmo can be until its predictions run out.
+  // Where each recomputed gizmo can be until its predictions run out. A moving ball of the
+  // classic model is swept below, as it comes, up to the earliest event queued by then.
+  const bool untilNextEvent = params_.model == MotionModel::Classic;
   ++stampNow_;
   for (GizmoId g : todo) {
     const std::size_t i = static_cast<std::size_t>(g);
     stamp_[i] = stampNow_;  // marks membership of `todo`
     if (Ball<Real>* b = gizmos_[i]->asBall()) {
-      if (b->captured() || b->resting()) {
-        validUntil_[i] = infinity();
-        boxes_[i] = b->bounds();
-      } else {
-        validUntil_[i] = ballHorizon(*b);
-        boxes_[i] = sweptBox(b->trajectoryAt(now_), Real(validUntil_[i] - now_), Ball<Real>::radius(),
-                             fromDouble<Real>(detail::kBroadPhaseMargin));
-      }
-      placeBall(g, !b->captured());
+      if (b->captured() || b->resting())
+        sweepBall(g, infinity());
+      else if (!untilNextEvent)
+        sweepBall(g, ballHorizon(*b));
     } else {
       const std::optional<Real> until = gizmos_[i]->predictionHorizon();
       validUntil_[i] = until ? *until : infinity();
@@ -680,13 +678,17 @@ void GameBoard<Real>::recomputePending() {
     AbstractGizmo<Real>& G = *gizmos_[static_cast<std::size_t>(g)];
     if (Ball<Real>* b = G.asBall()) {
       if (b->captured()) continue;
+      if (untilNextEvent && !b->resting()) sweepBall(g, nextEventHorizon());
       scheduleBallEvents(*b);
       gatherCandidates(g, candidates_);
       for (GizmoId other : candidates_) {
         const bool otherInTodo = stamp_[static_cast<std::size_t>(other)] == inTodo;
-        // A pair with both sides recomputed is predicted once: from the lower ball id, or
-        // from the ball when the other side is not a ball.
-        if (otherInTodo && gizmos_[static_cast<std::size_t>(other)]->asBall() && other < g) continue;
+        // A pair with both sides recomputed is predicted once: from the ball when the other
+        // side is not a ball; of two balls, from the lower id, or, when balls are swept as they
+        // come, from the higher (the lower one's box is final by then).
+        if (otherInTodo && gizmos_[static_cast<std::size_t>(other)]->asBall() &&
+            (untilNextEvent ? g < other : other < g))
+          continue;
         computePair(g, other);
       }
     } else {
@@ -701,6 +703,48 @@ void GameBoard<Real>::recomputePending() {
       for (GizmoId ballId : candidates_) computePair(ballId, g);
     }
   }
+}
+
+// Sets where a ball can be until `until` (its box, listed in the ball grid) and that its
+// predictions hold until then.
+template <class Real>
+void GameBoard<Real>::sweepBall(GizmoId id, const Real& until) {
+  const std::size_t i = static_cast<std::size_t>(id);
+  const Ball<Real>& b = *gizmos_[i]->asBall();
+  validUntil_[i] = until;
+  if (until < infinity())
+    boxes_[i] = sweptBox(b.trajectoryAt(now_), Real(until - now_), Ball<Real>::radius(),
+                         fromDouble<Real>(detail::kBroadPhaseMargin));
+  else
+    boxes_[i] = b.bounds();
+  placeBall(id, !b.captured());
+}
+
+// The classic model's horizon (docs/physics.md, "The event loop"): every event that takes time
+// steps every moving ball (advanceTo) and so predicts its pairs again, and a prediction past the
+// earliest event already queued would be removed unrun. On a busy board events come every few
+// microseconds, and a sweep to the maximum tick's end met every gizmo and ball of the board.
+template <class Real>
+Real GameBoard<Real>::nextEventHorizon() {
+  const Real horizon = now_ + params_.maxTick;
+  if (queue_.empty()) return horizon;
+  return minOf(horizon, queue_.top().time);
+}
+
+// Before each event of the classic model. After an event that took no time, or one that left a
+// ball's velocity as it was (no gravity, no friction), the earliest event can lie past the
+// horizon of a ball that was not recomputed: its pairs are predicted again up to that event. No
+// time passes, so this extends predictions and decides nothing; one round suffices, since the
+// earliest event only comes sooner while pairs are predicted.
+template <class Real>
+void GameBoard<Real>::coverUntilNextEvent() {
+  if (queue_.empty()) return;
+  const Real next = queue_.top().time;
+  for (GizmoId id : balls_) {
+    const Ball<Real>& b = *gizmos_[static_cast<std::size_t>(id)]->asBall();
+    if (!b.resting() && validUntil_[static_cast<std::size_t>(id)] < next) recompute_.push_back(id);
+  }
+  if (!recompute_.empty()) recomputePending();
 }
 
 // How far ahead a moving ball's pairs are predicted: the maximum tick length, or its next
