@@ -214,6 +214,7 @@ class GameBoard final : private BoardAccess<Real> {
   std::vector<Box<Real>> boxes_;               // per gizmo: where it can be until validUntil_
   std::vector<Real> validUntil_;               // per gizmo: its predictions hold until then
   std::vector<std::uint32_t> stamp_;           // marks the gizmos of the current recomputation
+  bool sweepFullTick_ = false;                 // coverUntilNextEvent's recomputations sweep to now + maxTick
   std::uint32_t stampNow_ = 0;
 
   EventQueue<Real> queue_;

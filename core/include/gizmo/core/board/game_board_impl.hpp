@@ -727,24 +727,31 @@ void GameBoard<Real>::sweepBall(GizmoId id, const Real& until) {
 template <class Real>
 Real GameBoard<Real>::nextEventHorizon() {
   const Real horizon = now_ + params_.maxTick;
-  if (queue_.empty()) return horizon;
+  if (queue_.empty() || sweepFullTick_) return horizon;
   return minOf(horizon, queue_.top().time);
 }
 
 // Before each event of the classic model. After an event that took no time, or one that left a
 // ball's velocity as it was (no gravity, no friction), the earliest event can lie past the
-// horizon of a ball that was not recomputed: its pairs are predicted again up to that event. No
-// time passes, so this extends predictions and decides nothing; one round suffices, since the
-// earliest event only comes sooner while pairs are predicted.
+// horizon of a ball that was not recomputed: such a ball is predicted again, no time passing,
+// to find what a longer sweep would have found. Predicting it again removes its events, and the
+// earliest event can then come later than another ball's horizon: hence the rounds. A ball
+// predicted again here is swept to the end of the maximum tick, where its recalculation event
+// lies, so it needs no second round, and the rounds end.
 template <class Real>
 void GameBoard<Real>::coverUntilNextEvent() {
-  if (queue_.empty()) return;
-  const Real next = queue_.top().time;
-  for (GizmoId id : balls_) {
-    const Ball<Real>& b = *gizmos_[static_cast<std::size_t>(id)]->asBall();
-    if (!b.resting() && validUntil_[static_cast<std::size_t>(id)] < next) recompute_.push_back(id);
+  const Real full = now_ + params_.maxTick;
+  sweepFullTick_ = true;
+  while (!queue_.empty()) {
+    const Real next = minOf(queue_.top().time, full);
+    for (GizmoId id : balls_) {
+      const Ball<Real>& b = *gizmos_[static_cast<std::size_t>(id)]->asBall();
+      if (!b.resting() && validUntil_[static_cast<std::size_t>(id)] < next) recompute_.push_back(id);
+    }
+    if (recompute_.empty()) break;
+    recomputePending();
   }
-  if (!recompute_.empty()) recomputePending();
+  sweepFullTick_ = false;
 }
 
 // How far ahead a moving ball's pairs are predicted: the maximum tick length, or its next
