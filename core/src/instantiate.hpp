@@ -1,9 +1,12 @@
 #pragma once
 // The core's templates, compiled once per scalar: each instantiate_*.cpp names one scalar.
 #include <cfloat>
-#include "gizmo/core/board/build_board_impl.hpp"
-#include "gizmo/core/board/game_board_impl.hpp"
-#include "gizmo/core/board/game_board_state_impl.hpp"
+#include "board/build_board_impl.hpp"
+#include "board/game_board_building_impl.hpp"
+#include "board/game_board_loop_impl.hpp"
+#include "board/game_board_predict_impl.hpp"
+#include "board/game_board_queries_impl.hpp"
+#include "board/game_board_state_impl.hpp"
 
 // Every float and double operation must round to its type, as IEEE 754 says, for the same bits on
 // every machine: FLT_EVAL_METHOD 0. i686's default x87 code (2) keeps 80-bit intermediates; its

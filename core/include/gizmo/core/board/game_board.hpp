@@ -3,7 +3,6 @@
 // them, and the discrete-event queue that simulates them, kept between ticks.
 #include <array>
 #include <limits>
-#include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -11,33 +10,17 @@
 #include <vector>
 
 #include "gizmo/core/board/board_state.hpp"
+#include "gizmo/core/board/broad_phase.hpp"
+#include "gizmo/core/board/collision_pairs.hpp"
 #include "gizmo/core/board/event_queue.hpp"
 #include "gizmo/core/board/id_set.hpp"
 #include "gizmo/core/board/observer.hpp"
 #include "gizmo/core/board/physics_params.hpp"
+#include "gizmo/core/board/triggers.hpp"
 #include "gizmo/core/gizmos/abstract_gizmo.hpp"
 #include "gizmo/core/gizmos/ball.hpp"
 
 namespace gizmo {
-
-// Which gizmo of a pair holds the collision handler (seed: the collider).
-enum class PairRole : std::uint8_t { None, FirstCollides, SecondCollides };
-
-// Seed: can collide / defer / never; a pair forms when neither side says never and at least
-// one side can collide. The first that can is the collider.
-template <class Real>
-PairRole formPair(const AbstractGizmo<Real>& a, const AbstractGizmo<Real>& b) {
-  const CollisionAnswer x = a.canCollideWith(b), y = b.canCollideWith(a);
-  if (x == CollisionAnswer::NeverCollides || y == CollisionAnswer::NeverCollides) return PairRole::None;
-  if (x == CollisionAnswer::CanCollide) return PairRole::FirstCollides;
-  if (y == CollisionAnswer::CanCollide) return PairRole::SecondCollides;
-  return PairRole::None;
-}
-
-struct CollisionPair {
-  GizmoId collider;
-  GizmoId collidee;
-};
 
 // Stopped instead of looping for ever: too many events with (next to) no board time between
 // them.
@@ -137,7 +120,6 @@ class GameBoard final : private BoardAccess<Real> {
   // with more or fewer of them than the board has now sets the count before it is restored.
   void setSpawnedCount(std::size_t count);
   GizmoId addSpawnedBall(const Vec2<Real>& p);
-  void formColliders(std::size_t known);
   void rebuild();
   void checkRestoredEvent(const Event<Real>& e, const BoardState<Real>& state) const;
   bool isGizmoId(std::int64_t id) const { return id >= 0 && std::uint64_t(id) < gizmos_.size(); }
@@ -160,15 +142,6 @@ class GameBoard final : private BoardAccess<Real> {
   Real nextEventHorizon();
   void coverUntilNextEvent();
   bool frictionTicks() const;
-  struct CellRange {
-    int x0, x1, y0, y1;  // inclusive; empty when x1 < x0
-    bool operator==(const CellRange&) const = default;
-  };
-  static CellRange cellsOf(const Box<Real>& box);
-  static bool isWide(const CellRange& cells);
-  void placeBall(GizmoId id, bool inGrid);
-  template <class Visit>
-  void forEachBallNear(const Box<Real>& box, Visit visit) const;
   template <class Accept>
   bool stillFeatureNear(const Vec2<Real>& p, const Real& reach, GizmoId except, Accept accept) const;
   Real frictionTickTime(Ball<Real>& ball) const;
@@ -179,8 +152,7 @@ class GameBoard final : private BoardAccess<Real> {
   std::vector<std::unique_ptr<AbstractGizmo<Real>>> gizmos_;
   std::vector<GizmoId> balls_;
   std::size_t spawned_ = 0;  // the last gizmos: balls that spawners added as the board ran
-  std::vector<std::vector<GizmoId>> triggerTargets_;  // by source gizmo
-  std::map<std::pair<int, int>, std::vector<GizmoId>> keyTargets_;  // (key, direction) → targets
+  Triggers triggers_;
   struct PendingInput {
     Real time;
     int key;
@@ -192,25 +164,11 @@ class GameBoard final : private BoardAccess<Real> {
   // Built once per board change.
   bool built_ = false;
   std::vector<std::int32_t> ballIndex_;        // gizmo id → index into balls_, or −1
-  // Which side of each ball's pair with a gizmo is the collider: one byte per pair keeps the
-  // table of a board of 100 balls and 300 gizmos within the first-level cache.
-  enum class Collider : std::uint8_t { None, Ball, Other };
-  std::vector<Collider> colliders_;            // balls × gizmos
+  ColliderTable<Real> colliders_;
   GizmoId colliderOf(GizmoId ball, GizmoId other) const {
-    switch (colliders_[std::size_t(ballIndex_[std::size_t(ball)]) * gizmos_.size() + std::size_t(other)]) {
-      case Collider::Ball: return ball;
-      case Collider::Other: return other;
-      case Collider::None: break;
-    }
-    return kNoGizmo;
+    return colliders_.colliderOf(std::size_t(ballIndex_[std::size_t(ball)]), ball, other);
   }
-  std::array<std::vector<GizmoId>, kBoardSize * kBoardSize> grid_;  // 1 L cells → fixed gizmos that reach into them
-  std::array<std::vector<GizmoId>, kBoardSize * kBoardSize> ballGrid_;  // 1 L cells → free balls whose boxes reach in
-  // A fast ball's box can span the whole board (5000 L/s over a 0.05 s tick): listed in each of
-  // its cells, it would cost every other ball's broad phase a look per cell. Balls whose boxes
-  // span more than kWideCells cells are listed here instead, and every query looks at them all.
-  std::vector<GizmoId> wideBalls_;
-  std::vector<CellRange> ballCells_;           // per gizmo: the cells its box covers (in ballGrid_, or wide)
+  BroadPhase<Real> broadPhase_;
   std::vector<Box<Real>> boxes_;               // per gizmo: where it can be until validUntil_
   std::vector<Real> validUntil_;               // per gizmo: its predictions hold until then
   std::vector<std::uint32_t> stamp_;           // marks the gizmos of the current recomputation

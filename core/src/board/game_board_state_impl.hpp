@@ -123,7 +123,8 @@ void GameBoard<Real>::restoreState(const BoardState<Real>& s) {
   queue_.restore(s.events, s.nextSequence);
   boxes_ = s.boxes;
   validUntil_ = s.validUntil;
-  for (GizmoId id : balls_) placeBall(id, !gizmos_[std::size_t(id)]->asBall()->captured());
+  for (GizmoId id : balls_)
+    broadPhase_.placeBall(id, boxes_[std::size_t(id)], !gizmos_[std::size_t(id)]->asBall()->captured());
   recompute_.clear();
   stopped_ = false;
 }
