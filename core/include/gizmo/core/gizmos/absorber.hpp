@@ -35,22 +35,22 @@ class Absorber final : public GridBumper<Real> {
                                                   const PhysicsParams<Real>& params) const override {
     const Ball<Real>* ball = other.asBall();
     if (!ball || ball->captured()) return std::nullopt;
-    if (std::find(firedInside_.begin(), firedInside_.end(), ball->id()) != firedInside_.end())
-      return leaveTime(*ball, now, limit);
+    if (firedAndInside(*ball, now)) return leaveTime(*ball, now, limit);
     return GridBumper<Real>::timeUntilCollision(other, now, limit, params);
   }
 
   void collide(AbstractGizmo<Real>& other, const Contact<Real>& contact, BoardAccess<Real>& board) override {
-    if (contact.kind == EventKind::Leave) {
-      std::erase(firedInside_, other.id());
-      return;
-    }
+    std::erase(firedInside_, other.id());  // left, or came back from outside (below)
+    if (contact.kind == EventKind::Leave) return;
     GridBumper<Real>::collide(other, contact, board);
   }
 
   // Seed: fireTrigger. Fires the first held ball unless one it fired is still inside.
   void fireTrigger(BoardAccess<Real>& board) override {
-    if (held_.empty() || !firedInside_.empty()) return;
+    if (held_.empty()) return;
+    for (const GizmoId fired : firedInside_)
+      if (firedAndInside(board.ballById(fired), board.now())) return;
+    firedInside_.clear();
     const GizmoId id = held_.front();
     held_.pop_front();
     Ball<Real>& ball = board.ballById(id);
@@ -90,6 +90,23 @@ class Absorber final : public GridBumper<Real> {
   }
 
  private:
+  // Whether a ball is one it fired that has not left: in its list, free, and with its centre
+  // within the rectangle grown by the ball's radius (leaveTime's). A fired ball can go without a
+  // Leave event: a teleporter inside the absorber moves it elsewhere, a sink or another absorber
+  // takes it. It is then out, and meets this absorber as any ball does: it is captured if it comes
+  // back. Kept in the list, it would stop the absorber firing for as long as it stayed away, and
+  // its "leave" would be found where its path crosses a side's line far from the rectangle, by
+  // whichever prediction happened to look that far.
+  bool firedAndInside(const Ball<Real>& ball, const Real& now) const {
+    if (ball.captured() || std::find(firedInside_.begin(), firedInside_.end(), ball.id()) == firedInside_.end())
+      return false;
+    const GizmoSpec s = this->spec();
+    const Real r = Ball<Real>::radius();
+    const Vec2<Real> p = ball.positionAt(now);
+    return Real(s.x) - r <= p.x && p.x <= Real(s.x + s.width) + r && Real(s.y) - r <= p.y &&
+           p.y <= Real(s.y + s.height) + r;
+  }
+
   // When a ball it fired stops overlapping the rectangle. The rectangle grown by the ball's
   // radius stands in for the exact rounded one: the ball counts as gone a little later at
   // the corners, never earlier.
