@@ -91,17 +91,19 @@ class Absorber final : public GridBumper<Real> {
 
  private:
   // Whether a ball is one it fired that has not left: in its list, free, and with its centre
-  // within the rectangle grown by the ball's radius (leaveTime's). A fired ball can go without a
-  // Leave event: a teleporter inside the absorber moves it elsewhere, a sink or another absorber
-  // takes it. It is then out, and meets this absorber as any ball does: it is captured if it comes
-  // back. Kept in the list, it would stop the absorber firing for as long as it stayed away, and
-  // its "leave" would be found where its path crosses a side's line far from the rectangle, by
-  // whichever prediction happened to look that far.
+  // within the rectangle grown by the ball's radius (leaveTime's) and kFiredSlack. A fired ball can
+  // go without a Leave event: a teleporter at the absorber's edge moves it elsewhere, a sink or
+  // another absorber takes it. It is then out, and meets this absorber as any ball does: it is
+  // captured if it comes back. Kept in the list, it would stop the absorber firing for as long as
+  // it stayed away, and its "leave" would be found where its path crosses a side's line far from
+  // the rectangle, by whichever prediction happened to look that far. The slack: a ball that a hit
+  // turns back on the side's line, at the instant it would have left, stays inside, though
+  // rounding may put its centre an ulp beyond the line (and a run in the other motion model not).
   bool firedAndInside(const Ball<Real>& ball, const Real& now) const {
     if (ball.captured() || std::find(firedInside_.begin(), firedInside_.end(), ball.id()) == firedInside_.end())
       return false;
     const GizmoSpec s = this->spec();
-    const Real r = Ball<Real>::radius();
+    const Real r = Ball<Real>::radius() + fromDouble<Real>(kFiredSlack);
     const Vec2<Real> p = ball.positionAt(now);
     return Real(s.x) - r <= p.x && p.x <= Real(s.x + s.width) + r && Real(s.y) - r <= p.y &&
            p.y <= Real(s.y + s.height) + r;
@@ -130,6 +132,8 @@ class Absorber final : public GridBumper<Real> {
     if (!best) return std::nullopt;
     return Contact<Real>{now + *best, 0, EventKind::Leave};
   }
+
+  static constexpr double kFiredSlack = 1e-6;  // L; far above rounding, far below any path a ball takes
 
   std::deque<GizmoId> held_;
   std::vector<GizmoId> firedInside_;
