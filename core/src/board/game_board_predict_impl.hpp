@@ -133,9 +133,28 @@ void GameBoard<Real>::coverUntilNextEvent() {
 // past it would be removed unrun (on a board with friction most events are friction ticks).
 template <class Real>
 Real GameBoard<Real>::ballHorizon(Ball<Real>& b) const {
-  const Real horizon = now_ + params_.maxTick;
+  const Real horizon = now_ + sweepSpan(b);
   if (!frictionTicks()) return horizon;
   return minOf(horizon, frictionTickTime(b));
+}
+
+// How long a fast ball is swept for: the maximum tick, halved until the ball's path over it
+// reaches no further than kSweepReach (its speed's part and gravity's part each within half of
+// it; products and comparisons, so that an exact scalar decides it too). At thousands of L/s a
+// whole tick's sweep covers the board, and every prediction of the ball then pairs it with every
+// other ball, where its next hit is among its neighbours.
+template <class Real>
+Real GameBoard<Real>::sweepSpan(const Ball<Real>& b) const {
+  const Real half = fromDouble<Real>(detail::kSweepReach / 2);
+  const Real v2 = lengthSquared(b.velocityAt(now_));
+  const Real g = params_.gravity < Real(0) ? Real(-params_.gravity) : params_.gravity;
+  Real h = params_.maxTick;
+  for (int k = 0; k < 40; ++k) {
+    const Real fall = g * h * h / Real(2);
+    if (!(half * half < v2 * h * h) && !(half < fall)) break;
+    h = h / Real(2);
+  }
+  return h;
 }
 
 template <class Real>
@@ -149,7 +168,7 @@ template <class Real>
 void GameBoard<Real>::scheduleBallEvents(Ball<Real>& b) {
   if (b.resting()) return;
   const GizmoId id = b.id();
-  const Real horizon = now_ + params_.maxTick;
+  const Real horizon = params_.model == MotionModel::Classic ? now_ + params_.maxTick : now_ + sweepSpan(b);
   // Each of these events recomputes the ball; when one comes by the horizon, a recalculate
   // event would always be removed before it runs, and is not scheduled.
   bool recomputedInTime = false;

@@ -25,6 +25,8 @@ inline constexpr double kBroadPhaseMargin = 1e-6;
 // prediction horizon. A fast ball's box can span the whole board (5000 L/s over a 0.05 s tick):
 // listed in each of its cells, it would cost every other ball's query a look per cell.
 inline constexpr int kWideCells = 16;
+// How far a fast ball's path may reach over its prediction horizon, in L (GameBoard::sweepSpan).
+inline constexpr double kSweepReach = 4.0;
 // The grid cell holding coordinate v, clamped to the board. Compared before converting, so
 // that truncation is the floor (v >= 0), and no value (huge, NaN) converts out of range:
 // std::floor costs a library call on a target without SSE4.1, and this runs for every box.

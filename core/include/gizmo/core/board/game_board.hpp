@@ -138,6 +138,7 @@ class GameBoard final : private BoardAccess<Real> {
   void computePair(GizmoId ball, GizmoId other);
   void gatherCandidates(GizmoId ball, std::vector<GizmoId>& out);
   Real ballHorizon(Ball<Real>& b) const;
+  Real sweepSpan(const Ball<Real>& b) const;
   void sweepBall(GizmoId ball, const Real& until);
   Real nextEventHorizon();
   void coverUntilNextEvent();
