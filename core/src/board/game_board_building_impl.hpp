@@ -79,6 +79,7 @@ GizmoId GameBoard<Real>::spawnBall(const Vec2<Real>& p) {
   boxes_.push_back(gizmos_.back()->bounds());
   validUntil_.push_back(infinity());
   stamp_.push_back(0);
+  extendedIn_.push_back(0);
   candidateSet_.reset(n);
   markForRecompute(id);
   return id;
@@ -115,6 +116,7 @@ void GameBoard<Real>::rebuild() {
   for (std::size_t g = 0; g < n; ++g) boxes_[g] = gizmos_[g]->bounds();
   validUntil_.assign(n, infinity());
   stamp_.assign(n, 0);
+  extendedIn_.assign(n, 0);
   candidateSet_.reset(n);
   queue_.clear();
   recompute_.clear();

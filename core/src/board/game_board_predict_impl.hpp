@@ -52,7 +52,7 @@ void GameBoard<Real>::recomputePending() {
     AbstractGizmo<Real>& G = *gizmos_[static_cast<std::size_t>(g)];
     if (Ball<Real>* b = G.asBall()) {
       if (b->captured()) continue;
-      if (untilNextEvent && !b->resting()) sweepBall(g, nextEventHorizon());
+      if (untilNextEvent && !b->resting()) sweepBall(g, classicHorizon(*b));
       scheduleBallEvents(*b);
       gatherCandidates(g, candidates_);
       for (GizmoId other : candidates_) {
@@ -94,28 +94,42 @@ void GameBoard<Real>::sweepBall(GizmoId id, const Real& until) {
   broadPhase_.placeBall(id, boxes_[i], !b.captured());
 }
 
-// The classic model's horizon (docs/physics.md, "The event loop"): every event that takes time
-// steps every moving ball (advanceTo) and so predicts its pairs again, and a prediction past the
-// earliest event already queued would be removed unrun. On a busy board events come every few
-// microseconds, and a sweep to the maximum tick's end met every gizmo and ball of the board.
+// The classic model's horizon (docs/physics.md, "The classic model's horizon"): every event that
+// takes time steps every moving ball (advanceTo) and so predicts its pairs again, and a prediction
+// past the earliest event already queued would be removed unrun. On a busy board events come
+// every few microseconds, and a sweep to the maximum tick's end met every gizmo and ball of the
+// board. A ball that coverUntilNextEvent extends is swept at least as far as a ballistic ball
+// (sweepSpan), so that it is not extended again at the next event, and to the tick's end the
+// second time in one call, so that the rounds end.
 template <class Real>
-Real GameBoard<Real>::nextEventHorizon() {
-  const Real horizon = now_ + params_.maxTick;
-  if (queue_.empty() || sweepFullTick_) return horizon;
-  return minOf(horizon, queue_.top().time);
+Real GameBoard<Real>::classicHorizon(const Ball<Real>& b) {
+  const Real full = now_ + params_.maxTick;
+  if (queue_.empty()) return full;
+  const Real next = minOf(full, queue_.top().time);
+  if (!covering_) return next;
+  std::uint32_t& extended = extendedIn_[static_cast<std::size_t>(b.id())];
+  if (extended == coverNow_) return full;
+  extended = coverNow_;
+  return minOf(full, maxOf(next, Real(now_ + sweepSpan(b))));
 }
 
 // Before each event of the classic model. After an event that took no time, or one that left a
 // ball's velocity as it was (no gravity, no friction), the earliest event can lie past the
 // horizon of a ball that was not recomputed: such a ball is predicted again, no time passing,
 // to find what a longer sweep would have found. Predicting it again removes its events, and the
-// earliest event can then come later than another ball's horizon: hence the rounds. A ball
-// predicted again here is swept to the end of the maximum tick, where its recalculation event
-// lies, so it needs no second round, and the rounds end.
+// earliest event can then come later than another ball's horizon: hence the rounds. Each ball is
+// swept at least to the earliest event queued when its turn comes (its events were removed
+// before), so none of the round falls short at once; a ball that falls short again in the same
+// call is swept to the end of the maximum tick, where its recalculation event lies, so it falls
+// short no more, and the rounds end.
 template <class Real>
 void GameBoard<Real>::coverUntilNextEvent() {
   const Real full = now_ + params_.maxTick;
-  sweepFullTick_ = true;
+  if (++coverNow_ == 0) {  // a wrapped count would find old marks
+    std::fill(extendedIn_.begin(), extendedIn_.end(), 0u);
+    coverNow_ = 1;
+  }
+  covering_ = true;
   while (!queue_.empty()) {
     const Real next = minOf(queue_.top().time, full);
     for (GizmoId id : balls_) {
@@ -125,7 +139,7 @@ void GameBoard<Real>::coverUntilNextEvent() {
     if (recompute_.empty()) break;
     recomputePending();
   }
-  sweepFullTick_ = false;
+  covering_ = false;
 }
 
 // How far ahead a moving ball's pairs are predicted: the maximum tick length, or its next

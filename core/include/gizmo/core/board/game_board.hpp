@@ -140,7 +140,7 @@ class GameBoard final : private BoardAccess<Real> {
   Real ballHorizon(Ball<Real>& b) const;
   Real sweepSpan(const Ball<Real>& b) const;
   void sweepBall(GizmoId ball, const Real& until);
-  Real nextEventHorizon();
+  Real classicHorizon(const Ball<Real>& b);
   void coverUntilNextEvent();
   bool frictionTicks() const;
   template <class Accept>
@@ -173,12 +173,16 @@ class GameBoard final : private BoardAccess<Real> {
   std::vector<Box<Real>> boxes_;               // per gizmo: where it can be until validUntil_
   std::vector<Real> validUntil_;               // per gizmo: its predictions hold until then
   std::vector<std::uint32_t> stamp_;           // marks the gizmos of the current recomputation
-  bool sweepFullTick_ = false;                 // coverUntilNextEvent's recomputations sweep to now + maxTick
   std::uint32_t stampNow_ = 0;
+  // coverUntilNextEvent: whether it runs, a number for each call, and per gizmo the call that
+  // last extended it (a ball extended a second time in one call is swept to the tick's end).
+  bool covering_ = false;
+  std::uint32_t coverNow_ = 0;
+  std::vector<std::uint32_t> extendedIn_;
 
   EventQueue<Real> queue_;
   std::vector<GizmoId> recompute_;
-  // Gizmos that started to move during the event being applied; empty between events.
+  // Gizmos that started to move during the present instant; empty between instants.
   std::vector<GizmoId> starting_;
   std::vector<GizmoId> recomputing_;  // recomputePending's working list, kept for its capacity
   std::vector<GizmoId> candidates_;
