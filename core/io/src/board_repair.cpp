@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 #include <vector>
@@ -70,60 +71,178 @@ void moveBallsInside(BoardSpec& board, Reporter& rep) {
   }
 }
 
+bool centreOnBoard(const BallSpec& b) { return b.x >= 0 && b.x <= kBoardSize && b.y >= 0 && b.y <= kBoardSize; }
+
+// The sizes of L, in pixels, that Gizmoball programs draw at: MIT 6.170's 20 (a 400-pixel board),
+// 25 (500 pixels), and the larger ones some programs chose.
+constexpr double kPixelsPerL[] = {20, 25, 30, 40, 50};
+
+// Whether a coordinate, divided by `scale`, falls on the quarter-L grid that programs place balls
+// on (cell corners, centres and the quarters between).
+bool onQuarterGrid(double v, double scale) {
+  const double q = v / scale * 4;
+  return std::floor(q) == q;
+}
+
+// A ball whose centre lies off the board, among gizmos placed in L, is taken as written in pixels
+// when one of the pixel sizes of L puts every such ball of the file on the board with both of its
+// coordinates on the quarter-L grid (the smallest such size); its velocity is divided too (pixels
+// per second). Without that evidence, as for a ball a little past a wall, the ball is off the
+// board (leaveOutWhatIsOffTheBoard). docs/board-files.md §2.
+void convertPixelBalls(BoardSpec& board, Reporter& rep) {
+  std::vector<BallSpec*> off;
+  for (BallSpec& b : board.balls)
+    if (finiteBall(b) && !centreOnBoard(b)) off.push_back(&b);
+  if (off.empty()) return;
+  double chosen = 0;
+  for (const double scale : kPixelsPerL) {
+    bool fits = true;
+    for (const BallSpec* b : off) {
+      const double x = b->x / scale, y = b->y / scale;
+      fits = fits && x >= kLow && x <= kHigh && y >= kLow && y <= kHigh && onQuarterGrid(b->x, scale) &&
+             onQuarterGrid(b->y, scale);
+    }
+    if (fits) {
+      chosen = scale;
+      break;
+    }
+  }
+  if (chosen == 0) return;
+  for (BallSpec* b : off) {
+    const BallSpec was = *b;
+    b->x /= chosen;
+    b->y /= chosen;
+    b->vx /= chosen;
+    b->vy /= chosen;
+    rep.lenient("ball-in-pixels", b->where,
+                "ball " + quote(b->name) + " at (" + num(was.x) + ", " + num(was.y) +
+                    ") lies off the 20 L board, among gizmos placed in L; it is read as written in pixels at " +
+                    num(chosen) + " per L (the smallest of 20, 25, 30, 40 and 50 that puts every such ball of the "
+                    "file on the board, at a quarter of L): at (" + num(b->x) + ", " + num(b->y) +
+                    ") with velocity (" + num(b->vx) + ", " + num(b->vy) + ")");
+  }
+}
+
+// The ball a gizmo's overlap message names ("square 'S' overlaps ball 'K' from line 3 …").
+std::optional<std::string> overlappedBall(const std::string& message) {
+  const std::string mark = " overlaps ball '";
+  const std::size_t from = message.find(mark);
+  if (from == std::string::npos) return std::nullopt;
+  const std::size_t start = from + mark.size(), end = message.find('\'', start);
+  if (end == std::string::npos) return std::nullopt;
+  return message.substr(start, end - start);
+}
+
 using Pos = std::pair<int, int>;
 Pos key(const SourcePos& p) { return {p.line, p.column}; }
+
+// Leaves out the balls and gizmos named by index, and every connection of a gizmo left out.
+void leaveOut(BoardSpec& board, const std::set<std::size_t>& dropBalls, const std::set<std::size_t>& dropGizmos,
+              Reporter& rep) {
+  std::set<std::string> gone;
+  for (const std::size_t i : dropGizmos) gone.insert(board.gizmos[i].name);
+  std::vector<BallSpec> balls;
+  for (std::size_t i = 0; i < board.balls.size(); ++i)
+    if (!dropBalls.count(i)) balls.push_back(std::move(board.balls[i]));
+  board.balls = std::move(balls);
+  std::vector<GizmoSpec> gizmos;
+  for (std::size_t i = 0; i < board.gizmos.size(); ++i)
+    if (!dropGizmos.count(i)) gizmos.push_back(std::move(board.gizmos[i]));
+  board.gizmos = std::move(gizmos);
+  std::erase_if(board.connections, [&](const ConnectSpec& c) {
+    const bool drop = gone.count(c.source) || gone.count(c.target);
+    if (drop)
+      rep.lenient("connection-to-left-out", c.where,
+                  "this connection names " + quote(gone.count(c.source) ? c.source : c.target) +
+                      ", which is left out; the connection is ignored");
+    return drop;
+  });
+  std::erase_if(board.keyConnections, [&](const KeyConnectSpec& k) {
+    const bool drop = gone.count(k.target) > 0;
+    if (drop)
+      rep.lenient("connection-to-left-out", k.where,
+                  "this connection names " + quote(k.target) + ", which is left out; the connection is ignored");
+    return drop;
+  });
+}
+
+// What lies off the board after the pixel rule, a ball whose centre is off it or a gizmo not
+// wholly on it, is left out: the board has no place for it (docs/board-files.md §2).
+void leaveOutWhatIsOffTheBoard(BoardSpec& board, Reporter& rep) {
+  std::set<std::size_t> dropBalls, dropGizmos;
+  for (std::size_t i = 0; i < board.balls.size(); ++i) {
+    const BallSpec& b = board.balls[i];
+    if (!finiteBall(b) || centreOnBoard(b)) continue;
+    dropBalls.insert(i);
+    rep.lenient("off-board-ball", b.where,
+                "ball " + quote(b.name) + " at (" + num(b.x) + ", " + num(b.y) +
+                    ") is not on the board, which spans 0..20 L in both directions; the ball is left out");
+  }
+  for (std::size_t i = 0; i < board.gizmos.size(); ++i) {
+    const GizmoSpec& g = board.gizmos[i];
+    if (g.type == GizmoType::Portal && (g.exitX < 0 || g.exitY < 0 || g.exitX >= kBoardSize || g.exitY >= kBoardSize)) {
+      dropGizmos.insert(i);
+      rep.lenient("off-board-exit", g.where,
+                  "portal " + quote(g.name) + " has its exit at cell " + std::to_string(g.exitX) + "," +
+                      std::to_string(g.exitY) + ", which is not on the board (cells 0..19 in both); the portal is left out");
+      continue;
+    }
+    if (gizmoOnBoard(g) || g.width <= 0 || g.height <= 0) continue;
+    dropGizmos.insert(i);
+    rep.lenient("off-board-gizmo", g.where,
+                std::string(gizmoTypeWord(g.type)) + " " + quote(g.name) + " covers x " + std::to_string(g.x) + ".." +
+                    std::to_string(g.x + g.width) + ", y " + std::to_string(g.y) + ".." +
+                    std::to_string(g.y + g.height) + ", not wholly on the board (0..20 in both); the " +
+                    gizmoTypeWord(g.type) + " is left out");
+  }
+  if (!dropBalls.empty() || !dropGizmos.empty()) leaveOut(board, dropBalls, dropGizmos, rep);
+}
 
 }  // namespace
 
 void repairPlacements(BoardSpec& board, Reporter& rep) {
   if (board.balls.size() > kMaxBalls || board.gizmos.size() > kMaxGizmos) return;
+  convertPixelBalls(board, rep);
+  leaveOutWhatIsOffTheBoard(board, rep);
   captureBallsInAbsorbers(board, rep);
   moveBallsInside(board, rep);
   // Each problem is reported at one statement; a statement places one ball or gizmo. Overlaps are
-  // reported at the later of the two, so leaving that one out keeps the earlier. Removing only
-  // shrinks the board, so this ends.
+  // reported at the later of the two, and leaving that one out keeps the earlier, except that of a
+  // ball and a gizmo the ball goes, whichever the file places first (an XML file places its balls
+  // before its gizmos): the gizmos are the board, a ball inside one has no place to start from.
+  // Removing only shrinks the board, so this ends.
   for (int round = 0; round < 64; ++round) {
     std::map<Pos, std::size_t> ballAt, gizmoAt;
-    for (std::size_t i = 0; i < board.balls.size(); ++i)
+    std::map<std::string, std::size_t> ballNamed;
+    for (std::size_t i = 0; i < board.balls.size(); ++i) {
       if (finiteBall(board.balls[i]) && board.balls[i].where.line > 0) ballAt[key(board.balls[i].where)] = i;
+      ballNamed.emplace(board.balls[i].name, i);
+    }
     for (std::size_t i = 0; i < board.gizmos.size(); ++i)
       if (gizmoOnBoard(board.gizmos[i]) && board.gizmos[i].where.line > 0) gizmoAt[key(board.gizmos[i].where)] = i;
     std::set<std::size_t> dropBalls, dropGizmos;
     for (const SpecProblem& p : checkBoardSpec(board)) {
       const bool overlap = p.message.find(" overlaps ") != std::string::npos;
       if (!overlap) continue;
-      if (const auto it = ballAt.find(key(p.where)); it != ballAt.end() && dropBalls.insert(it->second).second)
+      const auto it = ballAt.find(key(p.where));
+      const auto jt = gizmoAt.find(key(p.where));
+      if (it == ballAt.end() && jt != gizmoAt.end()) {
+        if (const std::optional<std::string> ball = overlappedBall(p.message)) {
+          if (const auto b = ballNamed.find(*ball); b != ballNamed.end()) {
+            if (dropBalls.insert(b->second).second)
+              rep.lenient("overlap-left-out", p.where, p.message + "; the ball is left out");
+            continue;
+          }
+        }
+      }
+      if (it != ballAt.end() && dropBalls.insert(it->second).second)
         rep.lenient("overlap-left-out", p.where, p.message + "; the ball is left out");
-      else if (const auto jt = gizmoAt.find(key(p.where)); jt != gizmoAt.end() && dropGizmos.insert(jt->second).second)
+      else if (jt != gizmoAt.end() && dropGizmos.insert(jt->second).second)
         rep.lenient("overlap-left-out", p.where, p.message + "; the " + gizmoTypeWord(board.gizmos[jt->second].type) +
                                                      " is left out");
     }
     if (dropBalls.empty() && dropGizmos.empty()) return;
-    std::set<std::string> gone;
-    for (const std::size_t i : dropGizmos) gone.insert(board.gizmos[i].name);
-    std::vector<BallSpec> balls;
-    for (std::size_t i = 0; i < board.balls.size(); ++i)
-      if (!dropBalls.count(i)) balls.push_back(std::move(board.balls[i]));
-    board.balls = std::move(balls);
-    std::vector<GizmoSpec> gizmos;
-    for (std::size_t i = 0; i < board.gizmos.size(); ++i)
-      if (!dropGizmos.count(i)) gizmos.push_back(std::move(board.gizmos[i]));
-    board.gizmos = std::move(gizmos);
-    std::erase_if(board.connections, [&](const ConnectSpec& c) {
-      const bool drop = gone.count(c.source) || gone.count(c.target);
-      if (drop)
-        rep.lenient("connection-to-left-out", c.where,
-                    "this connection names " + quote(gone.count(c.source) ? c.source : c.target) +
-                        ", which is left out; the connection is ignored");
-      return drop;
-    });
-    std::erase_if(board.keyConnections, [&](const KeyConnectSpec& k) {
-      const bool drop = gone.count(k.target) > 0;
-      if (drop)
-        rep.lenient("connection-to-left-out", k.where,
-                    "this connection names " + quote(k.target) + ", which is left out; the connection is ignored");
-      return drop;
-    });
+    leaveOut(board, dropBalls, dropGizmos, rep);
   }
 }
 

@@ -122,16 +122,14 @@ class TextReader {
     const CommandInfo* cmd = findCommand(t[0].text);
     if (!cmd) {
       if (const Addition* a = findAddition(t[0].text)) {
+        ++commandLines_;
         addition(*a, t);
         return;
       }
-      rep_.error(at(t[0]), quote(t[0].text) +
-                               " is not part of the Gizmoball format; the commands are Square, Circle, Triangle, "
-                               "LeftFlipper, RightFlipper, Absorber, Ball, Rotate, Delete, Move, Connect, "
-                               "KeyConnect, Gravity and Friction");
-      if (t.size() >= 2) failed_.insert(std::string(t[1].text));
+      unknownCommand(t);
       return;
     }
+    ++commandLines_;
     // d-g-n/CS308-GizmoBall's saver names every gizmo by its cell, X_Y; its spinner is another
     // gizmo than NiklavsM/Gizmoball's of the same spelling, which the core simulates.
     if (cmd->type == GizmoType::Spinner && cmd->cmd == Cmd::Gizmo && t.size() == 4 &&
@@ -148,12 +146,25 @@ class TextReader {
       leftOut_[std::string(t[1].text)] = std::string(t[0].text);
       return;
     }
+    const bool creates = cmd->cmd == Cmd::Gizmo || cmd->cmd == Cmd::Absorber || cmd->cmd == Cmd::Ball;
     if (t.size() < cmd->tokens) {
+      // The format's own commands have their values, and a line short of them is malformed. A
+      // gizmo that other programs added is spelled by each its own way: with fewer values (a
+      // portal without its exit) it is another program's, left out with what names it.
+      if (cmd->cmd == Cmd::Gizmo && !isStandardKind(cmd->type)) {
+        rep_.lenient("too-few-values:" + toLowerAscii(cmd->canonical), at(t[0]),
+                     std::string(cmd->canonical) + " takes " + std::to_string(cmd->tokens - 1) + " values (" +
+                         std::string(cmd->usage) + ") but the line has " + std::to_string(t.size() - 1) +
+                         "; it is another program's " + std::string(gizmoTypeWord(cmd->type)) +
+                         ", left out" + (t.size() >= 2 ? ", and so are the commands that name " + quote(t[1].text)
+                                                        : std::string()));
+        if (t.size() >= 2) leaveOutName(t[1], t[0]);
+        return;
+      }
       rep_.error(at(t[0]), std::string(cmd->canonical) + " needs " + std::to_string(cmd->tokens - 1) + " value" +
                                (cmd->tokens == 2 ? "" : "s") + " (" + std::string(cmd->usage) + ") but the line has " +
                                std::to_string(t.size() - 1));
-      if ((cmd->cmd == Cmd::Gizmo || cmd->cmd == Cmd::Absorber || cmd->cmd == Cmd::Ball) && t.size() >= 2)
-        failed_.insert(std::string(t[1].text));
+      if (creates && t.size() >= 2) failed_.insert(std::string(t[1].text));
       return;
     }
     if (t.size() == cmd->tokens + 1 && (cmd->cmd == Cmd::Gizmo || cmd->cmd == Cmd::Ball) && allLetters(t.back().text)) {
@@ -167,13 +178,22 @@ class TextReader {
                    "the action word " + quote(t.back().text) +
                        " (MIT 6.170's 'Connect PRODUCER CONSUMER ACTION') is ignored; the consumer performs its own "
                        "action");
+    } else if (t.size() > cmd->tokens && creates) {
+      // Values after what places a gizmo or a ball are its attributes in another program (a
+      // circle's radius, a size, a colour) or a comment: it is placed from its own values.
+      const Token& extra = t[cmd->tokens];
+      rep_.lenient("extra-values:" + toLowerAscii(cmd->canonical), at(extra),
+                   "what follows " + std::string(cmd->usage) + " (" + std::to_string(t.size() - cmd->tokens) +
+                       " more, from " + quote(extra.text) + ") is ignored" +
+                       (extra.text[0] == '#' ? " (the standard format has comments on lines of their own)"
+                                             : "; it is placed from its own values"));
     } else if (t.size() > cmd->tokens) {
+      // After any other command, more values say something this reader cannot know.
       const Token& extra = t[cmd->tokens];
       rep_.error(at(extra), "unexpected " + quote(extra.text) + " after the end of the command: " +
                                 std::string(cmd->usage) + " takes " + std::to_string(cmd->tokens - 1) + " value" +
                                 (cmd->tokens == 2 ? "" : "s") +
                                 (extra.text[0] == '#' ? " (comments must be on a line of their own)" : ""));
-      if ((cmd->cmd == Cmd::Gizmo || cmd->cmd == Cmd::Absorber || cmd->cmd == Cmd::Ball)) failed_.insert(std::string(t[1].text));
       return;
     }
     switch (cmd->cmd) {
@@ -188,6 +208,29 @@ class TextReader {
       case Cmd::Gravity: gravity(t); break;
       case Cmd::Friction: friction(t); break;
     }
+  }
+
+  // A line whose first word is no command of the format, nor another program's addition that
+  // this reader knows: left out, with one warning per word and a count. The name after it, when
+  // it is not one the board has, is taken for what the line would create, and the commands that
+  // name it are left out too. A file with no line of the format at all is no board (finish).
+  void unknownCommand(const std::vector<Token>& t) {
+    if (!firstUnknown_) firstUnknown_ = Unknown{std::string(t[0].text), at(t[0])};
+    const bool names = t.size() >= 2 && !names_.count(std::string(t[1].text)) &&
+                       !leftOut_.count(std::string(t[1].text)) && nameProblem(t[1].text).empty();
+    rep_.lenient("unknown-command:" + toLowerAscii(t[0].text), at(t[0]),
+                 quote(t[0].text) + " is not a command of the Gizmoball format (Square, Circle, Triangle, "
+                 "LeftFlipper, RightFlipper, Absorber, Ball, Rotate, Delete, Move, Connect, KeyConnect, Gravity, "
+                 "Friction) nor another program's that this reader knows; the line is left out" +
+                     (names ? ", and so are the commands that name " + quote(t[1].text) : std::string()));
+    if (names) leftOut_[std::string(t[1].text)] = std::string(t[0].text);
+  }
+
+  // What a left-out line would have created: later commands that name it are left out.
+  void leaveOutName(const Token& name, const Token& command) {
+    const std::string written(name.text);
+    if (names_.count(written)) return;  // an object of that name exists; the line does not replace it
+    leftOut_[written] = std::string(command.text);
   }
 
   void keywordCase(const Token& t, std::string_view canonical) {
@@ -222,6 +265,11 @@ class TextReader {
 
   std::string kindOf(const Ref& r) const {
     return r.ball ? std::string("ball") : std::string(gizmoTypeWord(gizmos_[r.index].type));
+  }
+
+  // A key's name rather than a malformed number: it starts with a letter.
+  static bool looksLikeWord(std::string_view s) {
+    return !s.empty() && ((s[0] >= 'a' && s[0] <= 'z') || (s[0] >= 'A' && s[0] <= 'Z'));
   }
 
   static bool allLetters(std::string_view s) {
@@ -530,15 +578,25 @@ class TextReader {
     connectionAlive_.push_back(1);
   }
 
-  // The key code of a KeyConnect: a whole number, or a key's name as some programs write it.
-  bool keyCode(const Token& t, long long& key) {
+  // The key code of a KeyConnect: a whole number, or a key's name as programs write it (Java's,
+  // JavaFX's and the browsers' names, key_names.cpp). A word that names no key this reader knows
+  // leaves the connection out (`unknownKey`), since no key of ours would trigger it.
+  bool keyCode(const Token& t, long long& key, bool& unknownKey) {
     if (!parseDecimal(t.text, "the key code").ok) {
       if (const std::optional<int> named = keyCodeOfName(t.text)) {
         key = *named;
         rep_.lenient("key-name", at(t),
                      "the key " + quote(t.text) + " is read as the key code " + std::to_string(key) +
-                         " (lejhy/Gizmoball writes JavaFX key names; the standard format writes the code)");
+                         " (programs write Java's, JavaFX's or the browsers' key names; the standard format writes "
+                         "the code)");
         return true;
+      }
+      if (looksLikeWord(t.text)) {
+        unknownKey = true;
+        rep_.lenient("key-unknown", at(t),
+                     "the key " + quote(t.text) + " is neither a key code nor a key name this reader knows; the "
+                     "connection is left out");
+        return false;
       }
     }
     if (!whole(t, "the key code", key)) return false;
@@ -558,7 +616,8 @@ class TextReader {
       keywordCase(t[1], "key");
     }
     long long key = 0;
-    ok = keyCode(t[2], key) && ok;
+    bool unknownKey = false;
+    ok = keyCode(t[2], key, unknownKey) && ok;
     std::vector<KeyDirection> directions;
     const std::string dir = toLowerAscii(t[3].text);
     if (dir == "down" || dir == "up") {
@@ -577,6 +636,7 @@ class TextReader {
       rep_.error(at(t[3]), "the key direction must be down or up, not " + quote(t[3].text));
       ok = false;
     }
+    if (unknownKey) return;  // left out, with its warning
     if (namesLeftOut(t[4], t[0])) return;
     const std::optional<std::string> target = end(t[4], false);
     if (!ok || !target) return;
@@ -659,6 +719,12 @@ class TextReader {
   }
 
   BoardSpec finish() {
+    if (commandLines_ == 0 && firstUnknown_) {
+      rep_.error(firstUnknown_->at, "no line of this file is a command of the Gizmoball format (the first line's "
+                                    "word is " + quote(firstUnknown_->word) +
+                                        "); it does not look like a Gizmoball board");
+      return BoardSpec{};
+    }
     for (Unresolved& u : unresolved_) {
       if (u.createdLater > 0)
         u.message += " at this point (it is created later, on line " + std::to_string(u.createdLater) +
@@ -705,6 +771,12 @@ class TextReader {
   std::unordered_map<std::string, std::string> leftOut_;  // names of left-out additions → their word
   std::unordered_map<std::string, std::vector<std::size_t>> pending_;  // unresolved_ entries by name
   std::unordered_set<std::string> failed_;  // names whose statement failed: no second error about them
+  struct Unknown {
+    std::string word;
+    SourcePos at;
+  };
+  std::optional<Unknown> firstUnknown_;  // the first line that is no command this reader knows
+  std::size_t commandLines_ = 0;         // lines that are commands of the format
   std::vector<Unresolved> unresolved_;
   std::vector<Deferred> deferred_;
 

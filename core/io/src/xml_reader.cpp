@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <initializer_list>
 #include <map>
+#include <set>
 #include <tuple>
 #include <utility>
 
 #include <pugixml.hpp>
 
 #include "gizmo/core/board_spec_check.hpp"
+#include "board_repair.hpp"
 #include "gizmo/core/gizmo_kinds.hpp"
 #include "parse_util.hpp"
 
@@ -111,6 +113,13 @@ class XmlReader {
       rep_.throwErrors();
     }
     readBoard(root);
+    if (schemaElements_ == 0 && leftOutElements_ > 0 && !rep_.failed()) {
+      rep_.error(elementAt(root), "no element of this <board> is one of the board schema's; it does not look like a "
+                                  "Gizmoball board");
+      return std::move(board_);
+    }
+    dropLeftOutConnections();
+    if (!rep_.failed()) repairPlacements(board_, rep_);
     for (SpecProblem& p : checkBoardSpec(board_)) rep_.error(p.where, std::move(p.message));
     return std::move(board_);
   }
@@ -253,6 +262,7 @@ class XmlReader {
       }
       if (c.type() != pugi::node_element) continue;
       const std::string_view n = c.name();
+      if (n == "ball" || n == "gizmos" || n == "connections") ++schemaElements_;
       if (n == "ball") {
         if (phase > 0)
           rep_.lenient("order", elementAt(c),
@@ -275,8 +285,8 @@ class XmlReader {
         phase = 2;
         readConnections(c);
       } else {
-        rep_.error(elementAt(c), "unknown element " + tag(n) + " in <board>; it holds <ball>, <gizmos> and <connections>" +
-                                     caseHint(n, {"ball", "gizmos", "connections"}));
+        leaveOutElement(c, "<board>", "it holds <ball>, <gizmos> and <connections>" +
+                                          caseHint(n, {"ball", "gizmos", "connections"}));
       }
     }
     if (!sawGizmos)
@@ -311,8 +321,17 @@ class XmlReader {
       if (c.type() != pugi::node_element) continue;
       const GizmoKindInfo* kind = gizmoKindByXmlElement(c.name());
       if (!kind) {
-        rep_.error(elementAt(c), "unknown gizmo element " + tag(c.name()) + "; the gizmos are " + gizmoElementList() +
-                                     caseHint(c.name(), gizmoElementNames()));
+        // Another program's spelling of ours (<SquareBumper>): read as ours, as the text reader
+        // reads keywords in any case.
+        for (const GizmoKindInfo& k : kGizmoKinds)
+          if (toLowerAscii(k.xmlElement) == toLowerAscii(c.name())) kind = &k;
+        if (kind)
+          rep_.lenient("element-case", elementAt(c),
+                       tag(c.name()) + " is written " + tag(kind->xmlElement) +
+                           " in the schema; gizmo elements are read without regard to case");
+      }
+      if (!kind) {
+        leaveOutElement(c, "<gizmos>", "the gizmos are " + gizmoElementList() + caseHint(c.name(), gizmoElementNames()));
         continue;
       }
       readGizmo(c, kind->type);
@@ -370,8 +389,7 @@ class XmlReader {
       } else if (n == "keyConnect") {
         readKeyConnect(c);
       } else {
-        rep_.error(elementAt(c), "unknown element " + tag(n) + " in <connections>; it holds <connect> and <keyConnect>" +
-                                     caseHint(n, {"connect", "keyConnect"}));
+        leaveOutElement(c, "<connections>", "it holds <connect> and <keyConnect>" + caseHint(n, {"connect", "keyConnect"}));
       }
     }
   }
@@ -426,6 +444,37 @@ class XmlReader {
     board_.keyConnections.push_back(std::move(k));
   }
 
+  // An element another program's schema has and ours does not: left out, with one warning per
+  // element name and a count; what it names (its name attribute) is left out of the connections
+  // too (dropLeftOutConnections). docs/board-files.md §2.
+  void leaveOutElement(const pugi::xml_node& e, const std::string& parent, const std::string& hint) {
+    const pugi::xml_attribute name = e.attribute("name");
+    if (name) leftOut_.insert(std::string(trimmed(name.value())));
+    ++leftOutElements_;
+    rep_.lenient("unknown-element:" + std::string(e.name()), elementAt(e),
+                 "unknown element " + tag(e.name()) + " in " + parent + " (" + hint + "); it is left out" +
+                     (name ? ", and so are the connections that name " + quote(trimmed(name.value())) : std::string()));
+  }
+
+  void dropLeftOutConnections() {
+    if (leftOut_.empty()) return;
+    auto named = [&](const std::string& n) { return leftOut_.count(n) > 0; };
+    std::erase_if(board_.connections, [&](const ConnectSpec& c) {
+      const bool drop = named(c.source) || named(c.target);
+      if (drop)
+        rep_.lenient("connection-to-left-out", c.where,
+                     "this connection names " + quote(named(c.source) ? c.source : c.target) +
+                         ", which is left out; the connection is ignored");
+      return drop;
+    });
+    std::erase_if(board_.keyConnections, [&](const KeyConnectSpec& k) {
+      if (!named(k.target)) return false;
+      rep_.lenient("connection-to-left-out", k.where,
+                   "this connection names " + quote(k.target) + ", which is left out; the connection is ignored");
+      return true;
+    });
+  }
+
   void duplicate(const SourcePos& at, const SourcePos& first) {
     rep_.lenient("duplicate-connection", at,
                  "this connection repeats the one on line " + std::to_string(first.line) + "; the repetition is ignored");
@@ -437,6 +486,9 @@ class XmlReader {
   BoardSpec board_;
   std::map<std::pair<std::string, std::string>, SourcePos> connections_;
   std::map<std::tuple<int, int, std::string>, SourcePos> keyConnections_;
+  std::set<std::string> leftOut_;      // the names of elements left out
+  std::size_t leftOutElements_ = 0;
+  std::size_t schemaElements_ = 0;     // <ball>, <gizmos> and <connections> in <board>
 };
 
 }  // namespace

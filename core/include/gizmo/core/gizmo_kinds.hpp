@@ -35,6 +35,9 @@ inline constexpr GizmoKindInfo kGizmoKinds[] = {
     {GizmoType::Spawner, "Spawner", "Spawner NAME X Y", "spawner", "spawner", "spawner"},
 };
 
+// The kinds of the Gizmoball format itself, before the additions of other programs.
+constexpr bool isStandardKind(GizmoType type) { return static_cast<int>(type) < static_cast<int>(GizmoType::Booster); }
+
 // The row of a kind. Every GizmoType has one (checked at compile time below).
 constexpr const GizmoKindInfo& gizmoKind(GizmoType type) { return kGizmoKinds[static_cast<int>(type)]; }
 
