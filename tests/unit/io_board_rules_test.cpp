@@ -162,6 +162,36 @@ TEST(BoardRules, ABallOffTheBoardInPixelsIsConverted) {
   expectWrittenBackLoadsStrictly(r);
 }
 
+// A file whose gizmos are placed in pixels: every corner a whole cell of 25 pixels, some gizmo far
+// beyond the board. Every gizmo and ball is divided by 25 (20 leaves 250 at 12.5 cells).
+TEST(BoardRules, AFileInPixelsIsConverted) {
+  const ReadResult r = read("Square S 250 250\nCircle C 100 0\nTriangle T 450 450\nLeftFlipper F 200 200\n"
+                            "Absorber A 100 400 400 410\nBall B 25 25 200 200\n");
+  ASSERT_EQ(r.board.gizmos.size(), 5u);
+  EXPECT_EQ(r.board.gizmos[0].x, 10);
+  EXPECT_EQ(r.board.gizmos[0].y, 10);
+  EXPECT_EQ(r.board.gizmos[2].x, 18);
+  EXPECT_EQ(r.board.gizmos[3].x, 8);
+  EXPECT_EQ(r.board.gizmos[3].width, 2);
+  EXPECT_EQ(r.board.gizmos[4].x, 4);
+  EXPECT_EQ(r.board.gizmos[4].y, 16);
+  EXPECT_EQ(r.board.gizmos[4].width, 12);
+  EXPECT_EQ(r.board.gizmos[4].height, 1);  // 10 pixels high: the one cell it reaches into
+  ASSERT_EQ(r.board.balls.size(), 1u);
+  EXPECT_EQ(r.board.balls[0].x, 1);
+  EXPECT_EQ(r.board.balls[0].vx, 8);
+  const std::string w = warningWith(r, "read as written in pixels at 25 per L");
+  EXPECT_EQ(w.substr(0, 30), "b.txt:1:1: warning: square 'S'");
+  expectWrittenBackLoadsStrictly(r);
+  // Without that evidence, a gizmo beyond the board is only that: left out.
+  const ReadResult lone = read("Square S 1 1\nSquare T 45 3\n");
+  ASSERT_EQ(lone.board.gizmos.size(), 1u);
+  EXPECT_EQ(lone.board.gizmos[0].name, "S");
+  // Near the board, values are cells, whatever they divide by.
+  const ReadResult near = read("Square S 0 0\nSquare T 20 0\n");
+  ASSERT_EQ(near.board.gizmos.size(), 1u);
+}
+
 TEST(BoardRules, OverlapsAreResolvedBesideOtherRules) {
   // Before, the circle's radius was an error, and with any error no placement was repaired.
   const ReadResult r = read("Square S14 5 5\nRightFlipper RF1 4 4\nCircle C 3 3 0.5\n");

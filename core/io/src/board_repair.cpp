@@ -84,6 +84,70 @@ bool onQuarterGrid(double v, double scale) {
   return std::floor(q) == q;
 }
 
+// A file whose gizmos are placed in pixels: some gizmo lies beyond twice the board's size, and at
+// one of the pixel sizes of L every gizmo's corner is a whole cell whose gizmo then lies on the
+// board, and every ball's centre lies on it. The smallest such size is taken, and every gizmo and
+// ball of the file is divided by it (an absorber covers the cells its far corner reaches into; a
+// ball's velocity is in pixels per second too). docs/board-files.md §2.
+void convertPixelFile(BoardSpec& board, Reporter& rep) {
+  const GizmoSpec* far = nullptr;
+  for (const GizmoSpec& g : board.gizmos)
+    if (!far && (g.x >= 2 * kBoardSize || g.y >= 2 * kBoardSize)) far = &g;
+  if (!far) return;
+  auto cells = [](long long v, long long s) { return (v + s - 1) / s; };  // v ≥ 0: the cells v reaches into
+  long long chosen = 0;
+  for (const double size : kPixelsPerL) {
+    const long long s = static_cast<long long>(size);
+    bool fits = true;
+    for (const GizmoSpec& g : board.gizmos) {
+      if (g.x < 0 || g.y < 0 || g.x % s != 0 || g.y % s != 0) {
+        fits = false;
+        break;
+      }
+      const long long x = g.x / s, y = g.y / s;
+      const long long w = g.type == GizmoType::Absorber ? cells(g.width, s) : g.width;
+      const long long h = g.type == GizmoType::Absorber ? cells(g.height, s) : g.height;
+      fits = x + w <= kBoardSize && y + h <= kBoardSize &&
+             (g.type != GizmoType::Portal || (g.exitX % s == 0 && g.exitY % s == 0));
+      if (!fits) break;
+    }
+    for (const BallSpec& b : board.balls)
+      fits = fits && finiteBall(b) && b.x / size >= 0 && b.x / size <= kBoardSize && b.y / size >= 0 &&
+             b.y / size <= kBoardSize;
+    if (fits) {
+      chosen = s;
+      break;
+    }
+  }
+  if (chosen == 0) return;
+  const std::string was = "(" + std::to_string(far->x) + ", " + std::to_string(far->y) + ")";
+  for (GizmoSpec& g : board.gizmos) {
+    g.x = static_cast<int>(g.x / chosen);
+    g.y = static_cast<int>(g.y / chosen);
+    if (g.type == GizmoType::Absorber) {
+      g.width = static_cast<int>(cells(g.width, chosen));
+      g.height = static_cast<int>(cells(g.height, chosen));
+    }
+    if (g.type == GizmoType::Portal) {
+      g.exitX = static_cast<int>(g.exitX / chosen);
+      g.exitY = static_cast<int>(g.exitY / chosen);
+    }
+  }
+  const double size = static_cast<double>(chosen);
+  for (BallSpec& b : board.balls) {
+    b.x /= size;
+    b.y /= size;
+    b.vx /= size;
+    b.vy /= size;
+  }
+  rep.lenient("file-in-pixels", far->where,
+              std::string(gizmoTypeWord(far->type)) + " " + quote(far->name) + " at " + was +
+                  " lies beyond the board, and the file places every gizmo at a whole cell of " + num(size) +
+                  " pixels: the file is read as written in pixels at " + num(size) +
+                  " per L (the smallest of 20, 25, 30, 40 and 50 at which every gizmo and ball is then on the "
+                  "board), every gizmo's corner and every ball's position and velocity divided by it");
+}
+
 // A ball whose centre lies off the board, among gizmos placed in L, is taken as written in pixels
 // when one of the pixel sizes of L puts every such ball of the file on the board with both of its
 // coordinates on the quarter-L grid (the smallest such size); its velocity is divided too (pixels
@@ -202,6 +266,7 @@ void leaveOutWhatIsOffTheBoard(BoardSpec& board, Reporter& rep) {
 
 void repairPlacements(BoardSpec& board, Reporter& rep) {
   if (board.balls.size() > kMaxBalls || board.gizmos.size() > kMaxGizmos) return;
+  convertPixelFile(board, rep);
   convertPixelBalls(board, rep);
   leaveOutWhatIsOffTheBoard(board, rep);
   captureBallsInAbsorbers(board, rep);
