@@ -11,6 +11,7 @@
 #include <unordered_set>
 
 #include "board_repair.hpp"
+#include "edited_list.hpp"
 #include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/core/gizmo_kinds.hpp"
 #include "key_names.hpp"
@@ -423,9 +424,7 @@ class TextReader {
       g.exitX = static_cast<int>(v[2]);
       g.exitY = static_cast<int>(v[3]);
     }
-    gizmos_.push_back(std::move(g));
-    gizmoAlive_.push_back(1);
-    created(written, name, Ref{false, gizmos_.size() - 1, 0, {}});
+    created(written, name, Ref{false, gizmos_.add(std::move(g)), 0, {}});
   }
 
   void createBall(const std::vector<Token>& t) {
@@ -444,9 +443,7 @@ class TextReader {
       if (nameOk) failed_.insert(written);
       return;
     }
-    balls_.push_back(std::move(b));
-    ballAlive_.push_back(1);
-    created(written, name, Ref{true, balls_.size() - 1, 0, {}});
+    created(written, name, Ref{true, balls_.add(std::move(b)), 0, {}});
   }
 
   // The live object written t, or null (the error is reported, or deferred so that it can say
@@ -489,24 +486,20 @@ class TextReader {
     if (!r) return;
     const std::string name = r->name;
     if (r->ball)
-      ballAlive_[r->index] = 0;
+      balls_.remove(r->index);
     else
-      gizmoAlive_[r->index] = 0;
+      gizmos_.remove(r->index);
     names_.erase(std::string(t[1].text));
     taken_.erase(name);
     // Its connections go with it.
     if (const auto it = connectionsOf_.find(name); it != connectionsOf_.end()) {
       for (const std::size_t i : it->second)
-        if (connectionAlive_[i]) {
-          connectionAlive_[i] = 0;
-          connectionIndex_.erase({connections_[i].source, connections_[i].target});
-        }
+        if (connections_.remove(i)) connectionIndex_.erase({connections_[i].source, connections_[i].target});
       connectionsOf_.erase(it);
     }
     if (const auto it = keyConnectionsOf_.find(name); it != keyConnectionsOf_.end()) {
       for (const std::size_t i : it->second)
-        if (keyAlive_[i]) {
-          keyAlive_[i] = 0;
+        if (keyConnections_.remove(i)) {
           const KeyConnectSpec& k = keyConnections_[i];
           keyIndex_.erase({k.key, static_cast<int>(k.direction), k.target});
         }
@@ -574,8 +567,7 @@ class TextReader {
     }
     connectionsOf_[c.source].push_back(connections_.size());
     connectionsOf_[c.target].push_back(connections_.size());
-    connections_.push_back(std::move(c));
-    connectionAlive_.push_back(1);
+    connections_.add(std::move(c));
   }
 
   // The key code of a KeyConnect: a whole number, or a key's name as programs write it (Java's,
@@ -658,8 +650,7 @@ class TextReader {
       return;
     }
     keyConnectionsOf_[k.target].push_back(keyConnections_.size());
-    keyConnections_.push_back(std::move(k));
-    keyAlive_.push_back(1);
+    keyConnections_.add(std::move(k));
   }
 
   // Connections that named something not there at their line: made when it exists at the end of
@@ -736,14 +727,10 @@ class TextReader {
     board.gravity = gravity_;
     board.mu = mu_;
     board.mu2 = mu2_;
-    for (std::size_t i = 0; i < gizmos_.size(); ++i)
-      if (gizmoAlive_[i]) board.gizmos.push_back(std::move(gizmos_[i]));
-    for (std::size_t i = 0; i < balls_.size(); ++i)
-      if (ballAlive_[i]) board.balls.push_back(std::move(balls_[i]));
-    for (std::size_t i = 0; i < connections_.size(); ++i)
-      if (connectionAlive_[i]) board.connections.push_back(std::move(connections_[i]));
-    for (std::size_t i = 0; i < keyConnections_.size(); ++i)
-      if (keyAlive_[i]) board.keyConnections.push_back(std::move(keyConnections_[i]));
+    board.gizmos = gizmos_.takeLive();
+    board.balls = balls_.takeLive();
+    board.connections = connections_.takeLive();
+    board.keyConnections = keyConnections_.takeLive();
     if (!rep_.failed()) repairPlacements(board, rep_);
     for (SpecProblem& p : checkBoardSpec(board)) rep_.error(p.where, std::move(p.message));
     return board;
@@ -762,10 +749,8 @@ class TextReader {
   Reporter& rep_;
   int line_ = 0;
 
-  std::vector<GizmoSpec> gizmos_;
-  std::vector<char> gizmoAlive_;
-  std::vector<BallSpec> balls_;
-  std::vector<char> ballAlive_;
+  EditedList<GizmoSpec> gizmos_;
+  EditedList<BallSpec> balls_;
   std::unordered_map<std::string, Ref> names_;  // live objects by the name the file writes
   std::unordered_set<std::string> taken_;       // the board names of live objects
   std::unordered_map<std::string, std::string> leftOut_;  // names of left-out additions → their word
@@ -780,12 +765,10 @@ class TextReader {
   std::vector<Unresolved> unresolved_;
   std::vector<Deferred> deferred_;
 
-  std::vector<ConnectSpec> connections_;
-  std::vector<char> connectionAlive_;
+  EditedList<ConnectSpec> connections_;
   std::map<std::pair<std::string, std::string>, std::size_t> connectionIndex_;  // live ones
   std::unordered_map<std::string, std::vector<std::size_t>> connectionsOf_;
-  std::vector<KeyConnectSpec> keyConnections_;
-  std::vector<char> keyAlive_;
+  EditedList<KeyConnectSpec> keyConnections_;
   std::map<std::tuple<int, int, std::string>, std::size_t> keyIndex_;
   std::unordered_map<std::string, std::vector<std::size_t>> keyConnectionsOf_;
 
