@@ -213,21 +213,7 @@ void leaveOut(BoardSpec& board, const std::set<std::size_t>& dropBalls, const st
   for (std::size_t i = 0; i < board.gizmos.size(); ++i)
     if (!dropGizmos.count(i)) gizmos.push_back(std::move(board.gizmos[i]));
   board.gizmos = std::move(gizmos);
-  std::erase_if(board.connections, [&](const ConnectSpec& c) {
-    const bool drop = gone.count(c.source) || gone.count(c.target);
-    if (drop)
-      rep.lenient("connection-to-left-out", c.where,
-                  "this connection names " + quote(gone.count(c.source) ? c.source : c.target) +
-                      ", which is left out; the connection is ignored");
-    return drop;
-  });
-  std::erase_if(board.keyConnections, [&](const KeyConnectSpec& k) {
-    const bool drop = gone.count(k.target) > 0;
-    if (drop)
-      rep.lenient("connection-to-left-out", k.where,
-                  "this connection names " + quote(k.target) + ", which is left out; the connection is ignored");
-    return drop;
-  });
+  dropConnectionsTo(board, gone, rep);
 }
 
 // What lies off the board after the pixel rule, a ball whose centre is off it or a gizmo not
@@ -263,6 +249,25 @@ void leaveOutWhatIsOffTheBoard(BoardSpec& board, Reporter& rep) {
 }
 
 }  // namespace
+
+void dropConnectionsTo(BoardSpec& board, const std::set<std::string>& gone, Reporter& rep) {
+  if (gone.empty()) return;
+  std::erase_if(board.connections, [&](const ConnectSpec& c) {
+    const bool drop = gone.count(c.source) || gone.count(c.target);
+    if (drop)
+      rep.lenient("connection-to-left-out", c.where,
+                  "this connection names " + quote(gone.count(c.source) ? c.source : c.target) +
+                      ", which is left out; the connection is ignored");
+    return drop;
+  });
+  std::erase_if(board.keyConnections, [&](const KeyConnectSpec& k) {
+    const bool drop = gone.count(k.target) > 0;
+    if (drop)
+      rep.lenient("connection-to-left-out", k.where,
+                  "this connection names " + quote(k.target) + ", which is left out; the connection is ignored");
+    return drop;
+  });
+}
 
 void repairPlacements(BoardSpec& board, Reporter& rep) {
   if (board.balls.size() > kMaxBalls || board.gizmos.size() > kMaxGizmos) return;

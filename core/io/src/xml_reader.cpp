@@ -118,7 +118,7 @@ class XmlReader {
                                   "Gizmoball board");
       return std::move(board_);
     }
-    dropLeftOutConnections();
+    dropConnectionsTo(board_, leftOut_, rep_);
     if (!rep_.failed()) repairPlacements(board_, rep_);
     for (SpecProblem& p : checkBoardSpec(board_)) rep_.error(p.where, std::move(p.message));
     return std::move(board_);
@@ -446,7 +446,7 @@ class XmlReader {
 
   // An element another program's schema has and ours does not: left out, with one warning per
   // element name and a count; what it names (its name attribute) is left out of the connections
-  // too (dropLeftOutConnections). docs/board-files.md §2.
+  // too (dropConnectionsTo, board_repair.hpp). docs/board-files.md §2.
   void leaveOutElement(const pugi::xml_node& e, const std::string& parent, const std::string& hint) {
     const pugi::xml_attribute name = e.attribute("name");
     if (name) leftOut_.insert(std::string(trimmed(name.value())));
@@ -454,25 +454,6 @@ class XmlReader {
     rep_.lenient("unknown-element:" + std::string(e.name()), elementAt(e),
                  "unknown element " + tag(e.name()) + " in " + parent + " (" + hint + "); it is left out" +
                      (name ? ", and so are the connections that name " + quote(trimmed(name.value())) : std::string()));
-  }
-
-  void dropLeftOutConnections() {
-    if (leftOut_.empty()) return;
-    auto named = [&](const std::string& n) { return leftOut_.count(n) > 0; };
-    std::erase_if(board_.connections, [&](const ConnectSpec& c) {
-      const bool drop = named(c.source) || named(c.target);
-      if (drop)
-        rep_.lenient("connection-to-left-out", c.where,
-                     "this connection names " + quote(named(c.source) ? c.source : c.target) +
-                         ", which is left out; the connection is ignored");
-      return drop;
-    });
-    std::erase_if(board_.keyConnections, [&](const KeyConnectSpec& k) {
-      if (!named(k.target)) return false;
-      rep_.lenient("connection-to-left-out", k.where,
-                   "this connection names " + quote(k.target) + ", which is left out; the connection is ignored");
-      return true;
-    });
   }
 
   void duplicate(const SourcePos& at, const SourcePos& first) {
