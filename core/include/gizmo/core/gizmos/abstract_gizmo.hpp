@@ -49,13 +49,12 @@ class BoardAccess {
   // Many hits at this one instant: balls are jammed between surfaces with no room to move, and
   // hits now leave no rebound along their normal.
   virtual bool jammed() const = 0;
-  // Gizmo g starts to move now. Once the instant is over (the board's last event at this time),
-  // if g is still in motion (inMotionAt), every ball sliding on it leaves that contact and every
-  // ball at rest (wedged) beside it wakes, since what g held up it may hold no more. One that was
-  // stopped again at this instant, by the same event or another, never moved, and what rests on
-  // it stays: a spinner connected to itself starts and stops at each of its own hits, and a ball
-  // wedged on it was woken by every hit and struck again by gravity a nanosecond later, for ever
-  // (campaign seeds 2536957963, case 65, and 4123105625, case 1684).
+  // Gizmo g starts to move now. Once the event's actions are done, if g is still in motion
+  // (inMotionAt), every ball sliding on it leaves that contact and every ball at rest (wedged)
+  // beside it wakes, since what g held up it may hold no more. One that was stopped again at
+  // this instant never moved, and what rests on it stays: a spinner connected to itself starts
+  // and stops at each of its own hits, and a ball wedged on it was woken by every hit and struck
+  // again by gravity a nanosecond later, for ever (campaign seed 2536957963, case 65).
   virtual void releaseContactsOn(GizmoId g) = 0;
   // Whether ball `ball` could be put with its centre at p now: inside the walls, clear of every
   // free ball and of the box of every gizmo but `ignore` (boxes, not shapes: a cautious answer).
