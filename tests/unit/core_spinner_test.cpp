@@ -141,45 +141,6 @@ TEST(Spinner, ConnectedToItselfItKeepsABallWedgedOnIt) {
   EXPECT_NEAR(ball.positionAt(board->now()).x, 10.75, 1e-6);
 }
 
-// The same board, and two keys connected to the spinner pressed at one instant: two events, the
-// first starts it and the second stops it where it stands, so it never moved and wakes nothing;
-// one key alone starts it and wakes the ball. Released after the first key's event, the ball woke
-// for a turn that never happened: the release waits for the instant to be over (docs/physics.md,
-// "Woken"). Campaign seed 4123105625, case 1684: a spinner connected to itself, started by one
-// ball's hit and stopped at once by its hit on a second ball pressed against a circle bumper,
-// released the first ball, which fell back onto it 1.8·10⁻⁹ s later and started it again, for ever.
-TEST(Spinner, StartedAndStoppedWithinOneInstantItWakesNothing) {
-  for (const int keys : {1, 2}) {
-    BoardSpec spec = emptyBoard(25, 0, 0);
-    spec.gizmos.push_back(gizmoAt(GizmoType::Spinner, "S", 9, 9, 0, 2, 2));
-    spec.gizmos.push_back(gizmoAt(GizmoType::Square, "Q", 11, 9, 0, 1, 1));
-    spec.connections.push_back(ConnectSpec{"S", "S", {}});
-    spec.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, "S", {}});
-    spec.keyConnections.push_back(KeyConnectSpec{33, KeyDirection::Down, "S", {}});
-    spec.balls.push_back(ballAt("K", 10.75, 9.566987, 0, 0));
-    auto board = build(spec);
-    board->tick(1.0);
-    const Ball<double>& ball = board->ballById(*board->find("K"));
-    ASSERT_TRUE(ball.wedged());
-    const Vec2<double> rest = ball.positionAt(board->now());
-    Recorder<double> rec;
-    board->setObserver(&rec);
-    board->scheduleInput(1.5, 32, KeyDirection::Down);
-    if (keys == 2) board->scheduleInput(1.5, 33, KeyDirection::Down);
-    board->tick(1.0);
-    ASSERT_EQ(rec.ofKind(EventKind::Input).size(), std::size_t(keys));
-    EXPECT_EQ(spinnerOf(*board).turning(), keys == 1);
-    if (keys == 1) {
-      EXPECT_GE(rec.countRule(ModelRule::ContactEnd), 1);  // woken by the turn
-      EXPECT_GT(ball.positionAt(board->now()).y, rest.y + 0.5);
-    } else {
-      EXPECT_EQ(rec.countRule(ModelRule::ContactEnd), 0);
-      EXPECT_TRUE(ball.wedged());
-      EXPECT_EQ(ball.positionAt(board->now()), rest);
-    }
-  }
-}
-
 // Its still shape is the cross at the angle it stopped at: a quarter turn on is the same cross,
 // and the rest shape of its spec is the cross at load.
 TEST(Spinner, ItsRestShapeIsTheCross) {
