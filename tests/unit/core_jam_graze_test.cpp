@@ -6,51 +6,22 @@
 // a wall, two balls and a wall passed a sliver of velocity back and forth at one instant.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <optional>
 #include <vector>
 
 #include "gizmo/core/gizmos/ball.hpp"
+#include "support/stub_board.hpp"
 
 namespace gizmo {
 namespace {
 
-// A board of three balls, jammed: just what Ball::collide asks of its board.
-class JammedBoard final : public BoardAccess<double> {
- public:
-  explicit JammedBoard(Vec2<double> bVelocity = {-1e-4, 1}) : balls{ballsWith(bVelocity)} {
-    params_.gravity = 0;  // nothing presses the balls together: their meetings are grazes
-    for (std::size_t i = 0; i < balls.size(); ++i) balls[i].setId(GizmoId(i));
-  }
-  const double& now() const override { return now_; }
-  const PhysicsParams<double>& params() const override { return params_; }
-  Ball<double>& ballById(GizmoId id) override { return balls[std::size_t(id)]; }
-  void markForRecompute(GizmoId) override {}
-  void schedule(EventKind, const double&, GizmoId, GizmoId, std::int32_t) override {}
-  void reportRule(ModelRule rule, GizmoId, GizmoId) override { rules.push_back(rule); }
-  bool jammed() const override { return true; }
-  void releaseContactsOn(GizmoId) override {}
-  bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return true; }
-  bool cradled(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
-  bool boxedAlong(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
-  void performAction(GizmoId) override {}
-  GizmoId spawnBall(const Vec2<double>&) override { return kNoGizmo; }
-
-  static std::array<Ball<double>, 3> ballsWith(Vec2<double> bVelocity) {
-    return {Ball<double>("A", {10, 10}, {0, 0}), Ball<double>("B", {10.5, 10}, bVelocity),
-            Ball<double>("C", {9.5, 10}, {1e-4, 1})};
-  }
-
-  // A in the middle, at rest; B and C touch it on either side, sliding past it upwards and
-  // closing on it at a ten-thousandth of their speed: more than a graze of the path
-  // (docs/physics.md, "Grazes"), less than a thousandth, which the jam lets through.
-  std::array<Ball<double>, 3> balls;
-  std::vector<ModelRule> rules;
-
- private:
-  double now_ = 0;
-  PhysicsParams<double> params_;
-};
+// Three balls on a jammed board. A in the middle, at rest; B and C touch it on either side, sliding
+// past it upwards and closing on it at a ten-thousandth of their speed: more than a graze of the
+// path (docs/physics.md, "Grazes"), less than a thousandth, which the jam lets through. Nothing
+// presses the balls together (no gravity): their meetings are grazes.
+std::vector<test::StubBall> jammedBalls(Vec2<double> bVelocity = {-1e-4, 1}) {
+  return {{"A", {10, 10}, {0, 0}}, {"B", {10.5, 10}, bVelocity}, {"C", {9.5, 10}, {1e-4, 1}}};
+}
 
 Contact<double> touchingNow() { return Contact<double>{0, 0, EventKind::Collision}; }
 
@@ -60,8 +31,10 @@ bool contactAtPresent(const Ball<double>& a, const Ball<double>& b, const Physic
 }
 
 TEST(JamGraze, ABallGrazingTwoBallsAtOneInstantSkipsBothContacts) {
-  JammedBoard board;
-  auto& [a, b, c] = board.balls;
+  test::StubBoard board(jammedBalls(), 0, true);
+  Ball<double>& a = board.balls[0];
+  Ball<double>& b = board.balls[1];
+  Ball<double>& c = board.balls[2];
   ASSERT_TRUE(contactAtPresent(a, b, board.params()));  // the scene: both pairs touch and close
   ASSERT_TRUE(contactAtPresent(a, c, board.params()));
   a.collide(b, touchingNow(), board);
@@ -73,8 +46,10 @@ TEST(JamGraze, ABallGrazingTwoBallsAtOneInstantSkipsBothContacts) {
 }
 
 TEST(JamGraze, BothGrazesSurviveASavedAndRestoredState) {
-  JammedBoard board;
-  auto& [a, b, c] = board.balls;
+  test::StubBoard board(jammedBalls(), 0, true);
+  Ball<double>& a = board.balls[0];
+  Ball<double>& b = board.balls[1];
+  Ball<double>& c = board.balls[2];
   a.collide(b, touchingNow(), board);
   a.collide(c, touchingNow(), board);
   GizmoState<double> saved;
@@ -98,7 +73,7 @@ TEST(JamGraze, BothGrazesSurviveASavedAndRestoredState) {
 // millions of rounds at one instant (campaign seed 20261203, case 4731).
 TEST(JamGraze, APairStruckTwiceAtOneInstantWhileJammedComesToRest) {
   const Vec2<double> headOn(-0.001, 0.0001);  // closing slowly, nearly head-on: a hit, not a graze
-  JammedBoard board(headOn);
+  test::StubBoard board(jammedBalls(headOn), 0, true);
   Ball<double>& a = board.balls[0];
   Ball<double>& b = board.balls[1];
   a.collide(b, touchingNow(), board);
@@ -113,13 +88,13 @@ TEST(JamGraze, APairStruckTwiceAtOneInstantWhileJammedComesToRest) {
   EXPECT_EQ(a.velocityAt(0), Vec2<double>(0, 0));
   EXPECT_EQ(b.velocityAt(0), Vec2<double>(0, 0));
   // Struck once, at another instant, a pair is struck as any jammed pair is.
-  JammedBoard other(headOn);
+  test::StubBoard other(jammedBalls(headOn), 0, true);
   other.balls[0].collide(other.balls[1], touchingNow(), other);
   EXPECT_FALSE(other.balls[0].wedged());
 }
 
 TEST(JamGraze, AGrazeCountsOnlyAtItsOwnInstant) {
-  JammedBoard board;
+  test::StubBoard board(jammedBalls(), 0, true);
   Ball<double>& a = board.balls[0];
   Ball<double>& b = board.balls[1];
   a.collide(b, touchingNow(), board);

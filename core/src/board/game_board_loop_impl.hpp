@@ -71,6 +71,11 @@ void GameBoard<Real>::tickUntil(const Real& end) {
     advanceTo(e.time);
     execute(e);
     recomputePending();
+    if (!starting_.empty() && (e.kind == EventKind::EndOfTick || now_ < queue_.top().time)) {
+      releaseContactsOfStarted();
+      wakeWhatRestsOnStarted();
+      recomputePending();
+    }
     if (e.kind == EventKind::EndOfTick) break;
   }
   if (observer_) observer_->tickBoundary(now_);
@@ -182,7 +187,6 @@ void GameBoard<Real>::applyEvent(const Event<Real>& e) {
     case EventKind::EndOfTick:
       break;
   }
-  releaseContactsOfStarted();
   wakeWhatRestsOnStarted();
 }
 
@@ -243,8 +247,12 @@ void GameBoard<Real>::schedule(EventKind kind, const Real& time, GizmoId a, Gizm
   if (observer_) observer_->eventScheduled(e);
 }
 
-// BoardAccess::releaseContactsOn, once the event's actions are done: each gizmo that started to
-// move and is still in motion, in the order they started.
+// BoardAccess::releaseContactsOn, once the instant is over (before the first later event, or at
+// the tick's end): each gizmo that started to move and is still in motion, in the order they
+// started. A gizmo started and stopped again within one instant never moved, though the two may
+// be different events: a spinner connected to itself, started by one ball's hit and stopped at
+// once by its hit on a second ball it touches, woke a ball wedged on it at each start, which fell
+// back and started it again 1.8·10⁻⁹ s later, for ever (campaign seed 4123105625, case 1684).
 template <class Real>
 void GameBoard<Real>::releaseContactsOfStarted() {
   for (const GizmoId g : starting_)

@@ -216,6 +216,12 @@ std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, cons
 // restSpeed / 2. Such a ball is hit at once: the gap searches only find gaps that go from positive
 // to zero, and this one starts at zero. (Half of restSpeed: the minimum bounce sends a ball off at
 // restSpeed, which must not count again.)
+// The callers asking about the present pass the ball's position resolution as the slack. The
+// searches compute the gap otherwise (the tip's as |e|² − reach², its offset summed in another
+// order), and a search that starts at a gap it rounds to zero or below finds no entry; with no
+// slack, a ball an ulp or two off and pressed in was neither hit now nor found entering. Released
+// at rest 2.2·10⁻¹⁶ L off a spinner's tip as the spinner started, a ball fell into the arm unmet
+// (campaign seed 1796527371, case 704: 8.5·10⁻⁹ L inside, then a stall).
 template <class Real>
 bool pressedIntoSwing(const Trajectory<Real>& at, const SwingTouch<Real>& touch, const Real& slack, const Real& restSpeed) {
   return !(slack < touch.gap) && dot(Vec2<Real>(at.v - touch.surfaceVelocity), touch.normal) < restSpeed / Real(2) &&

@@ -102,12 +102,13 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
       if (!hit) return std::nullopt;
       return Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
     }
-    // A ball touching the moving capsule and pressed into it is hit now (pressedIntoSwing).
+    // A ball touching the moving capsule and pressed into it is hit now, to within its position
+    // resolution (pressedIntoSwing).
     const SwingingAxis<Real> axis = axisAt(now);
     auto pressedOn = [&params](const Trajectory<Real>& at, const Real& slack) {
       return [&params, &at, slack](const SwingTouch<Real>& touch) { return pressedIntoSwing(at, touch, slack, params.restSpeed); };
     };
-    const std::optional<int> pressed = touchedSwingFeature(t, r, axis, pressedOn(t, Real(0)));
+    const std::optional<int> pressed = touchedSwingFeature(t, r, axis, pressedOn(t, positionResolution(t.p)));
     if (pressed) return Contact<Real>{now, *pressed, EventKind::Collision};
     const Real toLimit = limit - now, toStop = stopTime() - now;
     const Real horizon = minOf(toLimit, toStop);

@@ -100,11 +100,13 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
       if (reach * reach < lengthSquared(Vec2<Real>(t.p - centre_))) return std::nullopt;
       if (!pathMayComeWithin(t, span, centre_, armsReach)) return std::nullopt;
     }
-    // A ball touching an arm now and pressed into it is hit now (as at a swinging flipper).
+    // A ball touching an arm now and pressed into it is hit now (as at a swinging flipper), to
+    // within its position resolution (pressedIntoSwing).
+    const Real touching = positionResolution(t.p);
     for (int k = 0; k < 4; ++k) {
       const SwingingAxis<Real> axis = arm(static_cast<int>((quarter_ + turn.quarters + k) % 4), turn.phase);
       const std::optional<int> pressed = touchedSwingFeature(
-          t, r, axis, [&](const SwingTouch<Real>& touch) { return pressedIntoSwing(t, touch, Real(0), params.restSpeed); });
+          t, r, axis, [&](const SwingTouch<Real>& touch) { return pressedIntoSwing(t, touch, touching, params.restSpeed); });
       if (pressed) return Contact<Real>{now, 4 * k + *pressed, EventKind::Collision};
     }
     std::optional<Contact<Real>> best;
