@@ -10,8 +10,10 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
+#include "gizmo/core/board/game_board.hpp"
 #include "gizmo/core/math/precision.hpp"
 #include "gizmo/io/board_writer.hpp"
 #include "gizmo/replay/checksum.hpp"
@@ -276,12 +278,26 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
       // The log goes as far as the failure's tick: a failure late in a long run of a crowded
       // board would otherwise write hundreds of megabytes that no one needs.
       const RunRequest logged = c.failedAt ? runThroughTickAt(c.minimal, *c.failedAt) : c.minimal;
+      // A run that stops its own recording (a broken promise of the board's to the recorder, a
+      // stall) is what a replay-identity failure may be: the log then holds the run up to its last
+      // complete chunk, failure.txt says why it ends there, and the campaign goes on. Only a log
+      // that cannot be written stops the campaign.
+      std::string logStopped;
       try {
         replay::LogWriter log((folder / "run.gzlog").string());
-        replay::recordRun(logged, PrecisionChoice{c.scalar, 0}, log);
+        try {
+          replay::recordRun(logged, PrecisionChoice{c.scalar, 0}, log);
+        } catch (const StallError& e) {
+          logStopped = e.what();
+        } catch (const std::logic_error& e) {
+          logStopped = e.what();
+        }
       } catch (const std::exception& e) {
         throw CampaignError("cannot record " + (folder / "run.gzlog").string() + ": " + e.what());
       }
+      if (!logStopped.empty())
+        logStopped = "\nrun.gzlog stops where the run stopped its recording (" + logStopped +
+                     "): it holds the run up to its last complete chunk.\n";
       const std::string command = gizmo + " fuzz --property " + c.property + " --check " +
                                   quoted((folder / "board.xml").string()) + " --keys " +
                                   quoted((folder / "keys.txt").string()) + " --model " +
@@ -296,7 +312,8 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
       writeFile(folder / "failure.txt", "property " + c.property + ", case " + std::to_string(c.index) + " (seed " +
                                             hex(c.seed) + ", size " + std::to_string(c.size) + "), shrunk in " +
                                             std::to_string(c.shrinkSteps) + " steps\n" + departure + c.message +
-                                            "\n\n" + describeRun(c.minimal) + logExtent(c.minimal, logged));
+                                            "\n\n" + describeRun(c.minimal) +
+                                            (logStopped.empty() ? logExtent(c.minimal, logged) : logStopped));
     }
     results << "case " << c.index << ' ' << hex(c.seed) << ' ' << c.size << ' ' << c.property << ' '
             << (c.holds ? "holds" : "fails") << ' ' << hex(c.fingerprint) << ' ' << (c.holds ? "-" : c.folder) << "\n";

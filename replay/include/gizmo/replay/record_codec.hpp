@@ -207,11 +207,17 @@ class RecordEncoder {
   // that rule back after the tick's record, so it is not written (a friction tick without it is
   // a broken promise of the board's, and stops the recording). Rules the tick applies after it
   // (Settled) wait until it is known whether the friction rule was implied, and follow it.
+  // Reports held from an earlier time are written first: the board reports what a gizmo started
+  // in an instant released once the instant is over, after its last event, and the next event
+  // may be a friction tick with nothing scheduled or removed in between.
   void rule(const Real& t, ModelRule r, GizmoId g, GizmoId other) {
     ++records_;
-    if (r == ModelRule::FrictionApplied && other == kNoGizmo && held_.size() == 0 && !impliedFriction_) {
-      impliedFriction_ = ImpliedFriction{g, t};
-      return;
+    if (r == ModelRule::FrictionApplied && other == kNoGizmo && !impliedFriction_) {
+      if (held_.size() > 0 && !sameEncoding(t, heldTime_)) flushHeld();
+      if (held_.size() == 0) {
+        impliedFriction_ = ImpliedFriction{g, t};
+        return;
+      }
     }
     if (impliedFriction_ && sameEncoding(t, impliedFriction_->time)) {
       rulesAfterFriction_.push_back(PendingRule{r, g, other, t});
