@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -126,11 +127,43 @@ struct SeekTarget {
 };
 StateView seekLog(const OpenedLog& log, const SeekTarget& target);
 
+// --- branching ---------------------------------------------------------------------------------
+// A run taken over at a moment of a log (`gizmo record --from`): the branch goes on from that
+// moment with new key input, and its log (format version 5) stands alone: its header names the
+// parent, its first chunk's keyframe is the parent's state at the last tick boundary at or before
+// the branch point, and its records go on from there (docs/replay-format.md, "Branch logs").
+struct BranchRequest {
+  SeekTarget at;  // the branch point: after this many of the parent's events, or at this board time
+  // The key input from the branch point on, at board times. Keys earlier than the branch point are
+  // left out, and so are keys at its very time that the parent had already applied then, so that
+  // the parent's own key script, given whole, goes on as the parent did.
+  std::vector<TimedKey> keys;
+  std::optional<double> duration;  // the board time the branch runs to; the parent's by default
+};
+struct BranchResult {
+  RecordResult record;
+  BranchOrigin origin;       // the parent's digest and the branch point's event index
+  Exact time;                // the branch point's board time
+  std::uint64_t startEvents = 0;  // the parent's events at the tick boundary the branch log starts from
+  std::size_t keysLeftOut = 0;    // keys of the request before the branch point
+};
+// A branch point or branch request that cannot be served: the parent is cut off, the point lies
+// beyond its end (or before a branch log's start), the branch would end before its point.
+class BranchError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+// Everything that can fail is checked before the sink is given the header, so a refused branch
+// leaves no file. Throws BranchError, or FormatError for a damaged parent.
+BranchResult recordBranch(const OpenedLog& parent, const BranchRequest& request, ChunkSink& sink);
+
 // --- two logs ----------------------------------------------------------------------------------
 struct DiffReport {
   bool parted = false;
   bool sameScalar = true;       // values are compared exactly only between logs of one scalar
   std::uint64_t matched = 0;    // decisions alike before the logs part
+  // The first decision compared: 0, or where a branch starts (a branch log holds nothing before).
+  std::uint64_t firstDecision = 0;
   std::string where;            // what differs at the parting decision
   std::vector<std::string> notes;  // e.g. the logs are of different boards or models
   std::vector<DecisionView> before;  // the last alike decisions (of the first log)
