@@ -159,7 +159,7 @@ BranchResult branchAs(const OpenedLog& parent, const BranchRequest& request, Chu
   branch.duration = request.duration.value_or(parent.request.duration);
   if (fromDouble<Real>(branch.duration) < atPoint.now)
     throw BranchError("the branch would end at " + std::to_string(branch.duration) + " s, before its branch point at " +
-                      exactText(atPoint.now) + " s");
+                      std::to_string(toDouble(atPoint.now)) + " s");
 
   auto startingBoard = [&] {
     std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(branch);

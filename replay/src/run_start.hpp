@@ -83,7 +83,7 @@ SeekStart<Real> seekStart(const OpenedLog& log, const SeekTarget& target) {
                                     : fromDouble<Real>(*target.time) < s.board->now();
   if (log.reader.isBranch() && s.chunk == 0 && before)
     throw std::out_of_range("the branch log starts at event " + std::to_string(chunks[0].eventsDone) + ", time " +
-                            exactText(s.board->now()) + ": it holds nothing before");
+                            std::to_string(toDouble(s.board->now())) + " s: it holds nothing before");
   return s;
 }
 

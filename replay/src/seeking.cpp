@@ -1,4 +1,6 @@
 // The state of a log's run at an event or a time, from the nearest keyframe (replay.hpp: seekLog).
+#include <type_traits>
+
 #include "run_start.hpp"
 
 namespace gizmo::replay {
@@ -36,6 +38,19 @@ StateView seekAs(const OpenedLog& log, const SeekTarget& target) {
 }
 
 }  // namespace
+
+RunStartBoard startBoardInDouble(const OpenedLog& log) {
+  if (log.precision.kind != Precision::Double)
+    throw FormatError("the log was made with " + log.header.scalar + ", not double", 0);
+  return detail::withLogScalar(log, [&]<class Real>() -> RunStartBoard {
+    if constexpr (std::is_same_v<Real, double>) {
+      const detail::RunStart start = detail::runStartOf(log);
+      return RunStartBoard{detail::startBoard<double>(log), start.ticksDone, start.eventsDone};
+    } else {
+      throw FormatError("the log was made with " + log.header.scalar + ", not double", 0);
+    }
+  });
+}
 
 StateView seekLog(const OpenedLog& log, const SeekTarget& target) {
   return detail::withLogScalar(log, [&]<class Real>() { return seekAs<Real>(log, target); });

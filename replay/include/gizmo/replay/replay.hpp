@@ -127,6 +127,17 @@ struct SeekTarget {
 };
 StateView seekLog(const OpenedLog& log, const SeekTarget& target);
 
+// The board a double log's run starts from, for those who run it again themselves (gizmo verify
+// --certify): as built, its keys scheduled, or a branch log's first keyframe restored onto it;
+// with the ticks and events done before it (0 but in a branch log). Throws FormatError for a log
+// of another scalar.
+struct RunStartBoard {
+  std::unique_ptr<GameBoard<double>> board;
+  std::uint64_t ticksDone = 0;
+  std::uint64_t eventsDone = 0;
+};
+RunStartBoard startBoardInDouble(const OpenedLog& log);
+
 // --- branching ---------------------------------------------------------------------------------
 // A run taken over at a moment of a log (`gizmo record --from`): the branch goes on from that
 // moment with new key input, and its log (format version 5) stands alone: its header names the
