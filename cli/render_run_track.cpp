@@ -34,7 +34,27 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
   const PhysicsParams<double>& params = board->params();
   std::map<GizmoId, std::size_t> ballIndex;
   std::vector<BallPathBuilder> builders;
-  for (GizmoId id : board->ballIds()) {
+  // A branch log starts from its first keyframe: each ball and flipper as it left them, and its
+  // events are numbered from there.
+  std::optional<replay::StartView> branchStart;
+  if (log.reader.isBranch()) branchStart = replay::startView(log);
+  const std::uint64_t firstEvent = branchStart ? branchStart->events : 0;
+  track.startTime = branchStart ? branchStart->time : 0.0;
+  track.firstEvent = firstEvent;
+  if (branchStart) {
+    for (const replay::StartView::Ball& b : branchStart->balls) {
+      PathPiece start;
+      start.t0 = branchStart->time;
+      start.p = Vec2<double>(b.x, b.y);
+      start.v = Vec2<double>(b.vx, b.vy);
+      start.a = Vec2<double>(b.ax, b.ay);
+      start.logged = true;
+      ballIndex[b.id] = builders.size();
+      builders.emplace_back(track.model, params, tolerance, start, b.captured);
+      track.balls.push_back(BallTrack{b.id, replay::gizmoName(log.gizmoNames, b.id), {}});
+    }
+  }
+  for (GizmoId id : branchStart ? std::vector<GizmoId>{} : board->ballIds()) {
     const Ball<double>& ball = *board->gizmo(id).asBall();
     PathPiece start;
     start.p = ball.positionAt(0);
@@ -46,6 +66,9 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     track.balls.push_back(BallTrack{id, ball.name(), {}});
   }
   std::map<GizmoId, FlipperSwings> flippers;
+  if (branchStart)
+    for (const replay::StartView::Swing& f : branchStart->flippers)
+      flippers.emplace(f.id, FlipperSwings(SwingAnchor{-1, f.t0, f.s0, f.direction}, f.lastDirection));
   // A spinner's turning as the player draws it: the seconds it has turned (its angle over its rate,
   // within a quarter turn, as the cross looks the same a quarter on), anchored at each action.
   std::map<GizmoId, std::vector<SwingAnchor>> spinners;
@@ -81,8 +104,9 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     const double now = d->time.value;
     switch (d->type) {
       case replay::DecisionType::Executed: {
-        if (d->eventIndex != track.eventTime.size()) throw std::runtime_error("the log's events are not numbered in order");
-        event = static_cast<std::int64_t>(d->eventIndex);
+        if (d->eventIndex != firstEvent + track.eventTime.size())
+          throw std::runtime_error("the log's events are not numbered in order");
+        event = static_cast<std::int64_t>(d->eventIndex - firstEvent);
         track.eventTime.push_back(now);
         track.eventKind.push_back(static_cast<std::uint8_t>(d->kind));
         track.eventA.push_back(d->a);
@@ -149,13 +173,13 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
       default: break;  // scheduling, ticks and time moves draw nothing
     }
   }
-  track.endTime = track.eventTime.empty() ? 0.0 : track.eventTime.back();
+  track.endTime = track.eventTime.empty() ? track.startTime : track.eventTime.back();
 
   // The state after the last event settles each ball's last piece.
   std::optional<replay::StateView> end;
   try {
     replay::SeekTarget target;
-    target.events = track.eventTime.size();
+    target.events = firstEvent + track.eventTime.size();
     end = replay::seekLog(log, target);
   } catch (const std::exception&) {
     end.reset();  // a log cut off inside its first chunk: the last pieces keep their default

@@ -22,7 +22,7 @@ const RunData = (function () {
     const ev = r.events;
     const run = {
       label: r.label, model: r.model, precision: r.precision, duration: r.duration,
-      end: r.end_time, tolerance: r.tolerance, truncation: r.truncation, gizmoNames: r.gizmo_names,
+      start: r.start_time || 0, first: r.first_event || 0, end: r.end_time, tolerance: r.tolerance, truncation: r.truncation, gizmoNames: r.gizmo_names,
       count: ev.count,
       time: arrayOf(Float64Array, ev.time), kind: arrayOf(Uint8Array, ev.kind),
       a: arrayOf(Int16Array, ev.a), b: arrayOf(Int16Array, ev.b), feature: arrayOf(Int16Array, ev.feature),

@@ -52,6 +52,31 @@ RunStartBoard startBoardInDouble(const OpenedLog& log) {
   });
 }
 
+StartView startView(const OpenedLog& log) {
+  return detail::withLogScalar(log, [&]<class Real>() {
+    const std::unique_ptr<GameBoard<Real>> board = detail::startBoard<Real>(log);
+    board->tickSpan(Real(0), 1, Real(0));  // built, as its run builds it first (a restored board is)
+    StartView v;
+    v.events = board->executedTotal();
+    v.time = toDouble(board->now());
+    for (GizmoId id : board->ballIds()) {
+      const Ball<Real>& b = *board->gizmo(id).asBall();
+      const Vec2<Real> p = b.positionAt(board->now()), u = b.velocityAt(board->now());
+      v.balls.push_back(StartView::Ball{id, toDouble(p.x), toDouble(p.y), toDouble(u.x), toDouble(u.y),
+                                        toDouble(b.acceleration().x), toDouble(b.acceleration().y), b.captured()});
+    }
+    for (std::size_t g = 0; g < board->gizmoCount(); ++g) {
+      const AbstractGizmo<Real>& gizmo = board->gizmo(GizmoId(g));
+      if (gizmo.kind() != GizmoKind::LeftFlipper && gizmo.kind() != GizmoKind::RightFlipper) continue;
+      GizmoState<Real> st;  // t0, s0; direction, lastDirection, … (state_codec.hpp, "A gizmo's numbers")
+      gizmo.saveState(st);
+      v.flippers.push_back(StartView::Swing{GizmoId(g), toDouble(st.reals.at(0)), toDouble(st.reals.at(1)),
+                                            int(st.ints.at(0)), int(st.ints.at(1))});
+    }
+    return v;
+  });
+}
+
 StateView seekLog(const OpenedLog& log, const SeekTarget& target) {
   return detail::withLogScalar(log, [&]<class Real>() { return seekAs<Real>(log, target); });
 }

@@ -121,6 +121,12 @@ elseif(SCENARIO STREQUAL "branch")
   expect(2 STDERR "branch.gzlog: the branch log starts at event" ARGS replay ${branch} --event 5)
   expect(0 STDOUT "executed" ARGS dump ${branch} --from 4 --to 4.1)
   expect(0 STDOUT "certified decisions [(]ballistic[)]: [1-9][0-9]* of [1-9][0-9]*\n.*wrong decisions: 0" ARGS verify ${branch} --certify)
+  expect(0 ARGS render ${branch} -o ${dir}/branch.html)
+  file(READ ${dir}/branch.html page)
+  if(NOT page MATCHES "\"first_event\": ?[1-9][0-9]*" OR NOT page MATCHES "\"start_time\": ?[0-9.]+")
+    gizmo_fail("the player page does not say where the branch starts")
+  endif()
+  expect(0 ARGS render ${BOARDS}/spec-example.xml -o ${dir}/branch.svg --trace ${branch})
   # The key script given whole: the keys before the branch point are left out, and the branch is
   # the run again. No keys: the logs part where the parent's next press enters the queue, after
   # the branch point.

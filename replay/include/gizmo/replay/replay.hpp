@@ -138,6 +138,28 @@ struct RunStartBoard {
 };
 RunStartBoard startBoardInDouble(const OpenedLog& log);
 
+// The state a log's run starts from, rounded to doubles, for drawing it (gizmo render): the board
+// as built at 0, or a branch log's first keyframe. Each ball's position, velocity and
+// acceleration there and whether it is held; each flipper's swing (progress s0 at t0, moving at
+// direction, docs/physics.md §2).
+struct StartView {
+  std::uint64_t events = 0;
+  double time = 0;
+  struct Ball {
+    GizmoId id = kNoGizmo;
+    double x = 0, y = 0, vx = 0, vy = 0, ax = 0, ay = 0;
+    bool captured = false;
+  };
+  std::vector<Ball> balls;
+  struct Swing {
+    GizmoId id = kNoGizmo;
+    double t0 = 0, s0 = 0;
+    int direction = 0, lastDirection = 1;
+  };
+  std::vector<Swing> flippers;
+};
+StartView startView(const OpenedLog& log);
+
 // --- branching ---------------------------------------------------------------------------------
 // A run taken over at a moment of a log (`gizmo record --from`): the branch goes on from that
 // moment with new key input, and its log (format version 5) stands alone: its header names the
