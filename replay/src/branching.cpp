@@ -15,51 +15,45 @@ namespace {
 
 using namespace detail;
 
-class DroppingSink final : public ChunkSink {
- public:
-  void header(std::span<const std::uint8_t>) override {}
-  void chunk(std::span<const std::uint8_t>, const ChunkEntry&) override {}
-  void finish(const RunEnd&) override {}
-};
-
-// Watches the parent's run on to the branch point: numbers its decisions as its log does (with a
-// recorder whose chunks are dropped) and keeps the state at each tick boundary.
+// Keeps the state of the parent's run at each tick boundary on the way to the branch point.
 template <class Real>
 class BoundaryWatch final : public BoardObserver<Real> {
  public:
-  BoundaryWatch(const GameBoard<Real>& board, Recorder<Real>& counter, std::uint64_t ticksDone)
-      : board_(board), counter_(counter), ticks_(ticksDone) {}
+  BoundaryWatch(const GameBoard<Real>& board, std::uint64_t ticksDone) : board_(board), ticks_(ticksDone) {}
 
-  void eventScheduled(const Event<Real>& e) override { counter_.eventScheduled(e); }
-  void eventRemoved(const Event<Real>& e) override { counter_.eventRemoved(e); }
-  void eventExecuted(const Event<Real>& e, const EventOutcome<Real>& o) override { counter_.eventExecuted(e, o); }
-  void triggerFired(const Real& t, GizmoId s, GizmoId g) override { counter_.triggerFired(t, s, g); }
-  void actionPerformed(const Real& t, GizmoId g) override { counter_.actionPerformed(t, g); }
-  void inputApplied(const Real& t, int key, KeyDirection d) override { counter_.inputApplied(t, key, d); }
-  void modelRuleApplied(const Real& t, ModelRule r, GizmoId g, GizmoId o) override {
-    counter_.modelRuleApplied(t, r, g, o);
-  }
-  void tickBoundary(const Real& t) override {
-    counter_.tickBoundary(t);
+  void tickBoundary(const Real&) override {
     ++ticks_;
     mark();
   }
-
   // Takes the board's state now as the latest boundary (the start of the watched run).
   void mark() {
     state = board_.saveState();
     ticksDone = ticks_;
-    decisionsDone = counter_.decisions();
   }
 
   std::optional<BoardState<Real>> state;  // at the latest tick boundary
-  std::uint64_t ticksDone = 0, decisionsDone = 0;
+  std::uint64_t ticksDone = 0;
 
  private:
   const GameBoard<Real>& board_;
-  Recorder<Real>& counter_;
   std::uint64_t ticks_;
 };
+
+// How many of the log's decisions come before its state at a tick boundary, as the log numbers
+// them: those up to the boundary's tick record, or, at the board as built before the first tick,
+// those its building made (they come before the first tick's end is scheduled).
+std::uint64_t decisionsBefore(const OpenedLog& log, std::size_t chunk, std::uint64_t ticksDone, std::uint64_t events) {
+  const std::vector<std::uint8_t> payload = log.reader.chunkPayload(chunk);
+  ChunkPreamble start;
+  readPreamble(payload, start);
+  if (start.hasKeyframe && ticksDone == start.ticksDone) return start.decisionsDone;
+  DecisionStream stream(log, log.reader.chunks()[chunk].time);
+  while (const std::optional<DecisionView> d = stream.next()) {
+    if (ticksDone == 0 && d->type == DecisionType::Scheduled && d->kind == EventKind::EndOfTick) return d->index;
+    if (ticksDone > 0 && d->type == DecisionType::Tick && d->eventIndex == events) return d->index + 1;
+  }
+  throw FormatError("the log's decisions do not reach the tick boundary before the branch point", 0);
+}
 
 // The keys in the order the board queues them: by time, equal times in the order given, and none
 // after the run's end (prepareRun).
@@ -133,15 +127,7 @@ BranchResult branchAs(const OpenedLog& parent, const BranchRequest& request, Chu
   } catch (const std::out_of_range& e) {
     throw BranchError(e.what());
   }
-  DroppingSink dropped;
-  const std::vector<std::uint8_t> first = parent.reader.chunkPayload(seek.chunk);
-  ChunkPreamble preamble;
-  readPreamble(first, preamble);
-  std::optional<Recorder<Real>> counter;
-  if (preamble.hasKeyframe)
-    counter.emplace(dropped, *seek.board, typename Recorder<Real>::Start{preamble.ticksDone, preamble.decisionsDone});
-  else counter.emplace(dropped, *seek.board);
-  BoundaryWatch<Real> watch(*seek.board, *counter, seek.ticksDone);
+  BoundaryWatch<Real> watch(*seek.board, seek.ticksDone);
   seek.board->setObserver(&watch);
   seek.board->tickSpan(Real(0), 1, Real(0));  // builds a board fresh from its spec, as its run would first
   watch.mark();
@@ -181,6 +167,7 @@ BranchResult branchAs(const OpenedLog& parent, const BranchRequest& request, Chu
                         ") would run before the parent's decisions up to the branch point; give it a later time");
   }
 
+  const std::uint64_t decisionsDone = decisionsBefore(parent, seek.chunk, watch.ticksDone, watch.state->executedTotal);
   BranchResult result;
   result.origin = BranchOrigin{parent.reader.fileDigest(), atPoint.executedTotal};
   result.time = exact(atPoint.now);
@@ -189,7 +176,7 @@ BranchResult branchAs(const OpenedLog& parent, const BranchRequest& request, Chu
 
   std::unique_ptr<GameBoard<Real>> board = startingBoard();
   sink.branchHeader(headerBytes(branch, parent.precision, *board, parent.header.boardWarnings, result.origin));
-  Recorder<Real> recorder(sink, *board, typename Recorder<Real>::Start{watch.ticksDone, watch.decisionsDone});
+  Recorder<Real> recorder(sink, *board, typename Recorder<Real>::Start{watch.ticksDone, decisionsDone});
   board->setObserver(&recorder);
   try {
     continueRun(*board, branch, std::int64_t(watch.ticksDone));

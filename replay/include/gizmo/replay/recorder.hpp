@@ -56,9 +56,6 @@ class Recorder final : public BoardObserver<Real> {
     begin(board.saveState());
   }
 
-  // Decisions made so far, counted as a log numbers them (the decisions before the start included).
-  std::uint64_t decisions() const { return decisionsBefore_ + encoder_.records(); }
-
   void eventScheduled(const Event<Real>& e) override {
     if (next_) beginNext();
     digest_.scheduled(e);
@@ -133,7 +130,7 @@ class Recorder final : public BoardObserver<Real> {
     ChunkPreamble p;
     p.ticksDone = ticks_;
     p.eventsDone = state ? state->executedTotal : 0;
-    p.decisionsDone = decisions();
+    p.decisionsDone = decisionsBefore_ + encoder_.records();
     p.time = state ? toDouble(state->now) : 0.0;
     p.hasKeyframe = state.has_value();
     preamble_.clear();
