@@ -142,6 +142,13 @@ elseif(SCENARIO STREQUAL "branch")
   expect(0 STDOUT "alike" ARGS diff ${branch} ${dir}/branch2.gzlog)
   expect(2 STDERR "run.gzlog, .*branch2.gzlog: the second log is a branch of another log" ARGS diff ${log} ${dir}/branch2.gzlog)
   expect(0 STDOUT "\"branch_event\": 100" ARGS record --from ${log} --event 100 -o ${dir}/json.gzlog --json)
+  # A branch may run on past its parent's end; cut off, it is read up to its last complete chunk.
+  expect(0 STDOUT "run +to 40 s" ARGS record --from ${log} --event 300 --keys ${keys} --time 40 -o ${dir}/long.gzlog)
+  file(SIZE ${dir}/long.gzlog size)
+  math(EXPR middle "${size} / 2")
+  file(COPY_FILE ${dir}/long.gzlog ${dir}/long-cut.gzlog)
+  execute_process(COMMAND truncate -s ${middle} ${dir}/long-cut.gzlog)
+  expect(2 STDOUT "identical.*every decision it holds replays identically" STDERR "long-cut.gzlog: the log is cut off" ARGS replay ${dir}/long-cut.gzlog)
 elseif(SCENARIO STREQUAL "branch_refusals")
   # Each refusal says which file and what is wrong, exits 2 and writes nothing.
   record(--time 2)
