@@ -1,12 +1,14 @@
 // One log read into the arrays the pictures and the player draw from (see render_run_track.hpp).
 #include "render_run_track.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
 
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
+#include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/sink.hpp"
 #include "gizmo/core/gizmos/spawner.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
@@ -66,9 +68,12 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     track.balls.push_back(BallTrack{id, ball.name(), {}});
   }
   std::map<GizmoId, FlipperSwings> flippers;
+  // Anchors from the start are anchored where the run starts (the page takes their time from there).
   if (branchStart)
-    for (const replay::StartView::Swing& f : branchStart->flippers)
-      flippers.emplace(f.id, FlipperSwings(SwingAnchor{-1, f.t0, f.s0, f.direction}, f.lastDirection));
+    for (const replay::StartView::Swing& f : branchStart->flippers) {
+      const double s = std::clamp(f.s0 + f.direction * (track.startTime - f.t0), 0.0, Flipper<double>::swingTime());
+      flippers.emplace(f.id, FlipperSwings(SwingAnchor{-1, track.startTime, s, f.direction}, f.lastDirection));
+    }
   // A spinner's turning as the player draws it: the seconds it has turned (its angle over its rate,
   // within a quarter turn, as the cross looks the same a quarter on), anchored at each action.
   std::map<GizmoId, std::vector<SwingAnchor>> spinners;
@@ -85,6 +90,13 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     if (specs[i].type == GizmoType::Sink) hold[id] = Sink<double>(specs[i]).centre();
     if (specs[i].type == GizmoType::Spawner) spawnAt[id] = Spawner<double>(specs[i]).centre();
   }
+  // A branch log's spinners as its first keyframe left them: the seconds turned past a quarter.
+  if (branchStart)
+    for (const replay::StartView::Turn& t : branchStart->spinners)
+      spinners[t.id] = {SwingAnchor{-1, track.startTime,
+                                    std::fmod(t.phase / kSpinnerTurnRate + (t.turning ? track.startTime - t.t0 : 0.0),
+                                              std::acos(-1.0) / 2 / kSpinnerTurnRate),
+                                    t.turning ? 1 : 0}};
   auto builderOf = [&](GizmoId id) -> BallPathBuilder* {
     const auto it = ballIndex.find(id);
     return it == ballIndex.end() ? nullptr : &builders[it->second];

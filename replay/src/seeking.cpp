@@ -67,11 +67,18 @@ StartView startView(const OpenedLog& log) {
     }
     for (std::size_t g = 0; g < board->gizmoCount(); ++g) {
       const AbstractGizmo<Real>& gizmo = board->gizmo(GizmoId(g));
-      if (gizmo.kind() != GizmoKind::LeftFlipper && gizmo.kind() != GizmoKind::RightFlipper) continue;
-      GizmoState<Real> st;  // t0, s0; direction, lastDirection, … (state_codec.hpp, "A gizmo's numbers")
+      const GizmoKind kind = gizmo.kind();
+      if (kind != GizmoKind::LeftFlipper && kind != GizmoKind::RightFlipper && kind != GizmoKind::Spinner) continue;
+      // A flipper: t0, s0; direction, lastDirection, … A spinner: t0, phase; quarter, turning, …
+      // (Flipper and Spinner saveState; docs/replay-format.md, "A gizmo's numbers").
+      GizmoState<Real> st;
       gizmo.saveState(st);
-      v.flippers.push_back(StartView::Swing{GizmoId(g), toDouble(st.reals.at(0)), toDouble(st.reals.at(1)),
-                                            int(st.ints.at(0)), int(st.ints.at(1))});
+      if (kind == GizmoKind::Spinner)
+        v.spinners.push_back(StartView::Turn{GizmoId(g), toDouble(st.reals.at(0)), toDouble(st.reals.at(1)),
+                                             st.ints.at(1) != 0});
+      else
+        v.flippers.push_back(StartView::Swing{GizmoId(g), toDouble(st.reals.at(0)), toDouble(st.reals.at(1)),
+                                              int(st.ints.at(0)), int(st.ints.at(1))});
     }
     return v;
   });

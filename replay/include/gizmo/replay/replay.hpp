@@ -141,7 +141,7 @@ RunStartBoard startBoardInDouble(const OpenedLog& log);
 // The state a log's run starts from, rounded to doubles, for drawing it (gizmo render): the board
 // as built at 0, or a branch log's first keyframe. Each ball's position, velocity and
 // acceleration there and whether it is held; each flipper's swing (progress s0 at t0, moving at
-// direction, docs/physics.md §2).
+// direction, docs/physics.md §2) and each spinner's turn.
 struct StartView {
   std::uint64_t events = 0;
   double time = 0;
@@ -157,6 +157,12 @@ struct StartView {
     int direction = 0, lastDirection = 1;
   };
   std::vector<Swing> flippers;
+  struct Turn {  // a spinner: its cross at phase (radians past a quarter turn) at t0, turning or not
+    GizmoId id = kNoGizmo;
+    double t0 = 0, phase = 0;
+    bool turning = false;
+  };
+  std::vector<Turn> spinners;
 };
 StartView startView(const OpenedLog& log);
 
