@@ -17,6 +17,9 @@ int diffCommand(const DiffOptions& o) {
   replay::DiffReport r;
   try {
     r = replay::diffLogs(*a, *b, std::size_t(o.context), o.summary);
+  } catch (const replay::BranchError& e) {
+    std::cerr << "gizmo diff: " << o.first << ", " << o.second << ": " << e.what() << '\n';
+    return kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "gizmo diff: " << e.what() << '\n';
     return kExitBadInput;
@@ -26,6 +29,7 @@ int diffCommand(const DiffOptions& o) {
     nlohmann::ordered_json j{{"parted", r.parted},
                              {"same_scalar", r.sameScalar},
                              {"matched", r.matched},
+                             {"first_decision", r.firstDecision},
                              {"max_time_difference", r.maxTimeDifference},
                              {"max_position_difference", r.maxPositionDifference},
                              {"notes", r.notes}};
@@ -45,10 +49,12 @@ int diffCommand(const DiffOptions& o) {
   }
   for (const std::string& n : r.notes) std::printf("note: %s\n", n.c_str());
   if (!r.parted) {
-    std::printf("alike: all %llu decisions%s\n", static_cast<unsigned long long>(r.matched),
+    std::printf("alike: all %llu decisions%s%s\n", static_cast<unsigned long long>(r.matched),
+                r.firstDecision ? (" from decision " + std::to_string(r.firstDecision)).c_str() : "",
                 r.sameScalar ? " are identical" : " are the same decisions");
   } else {
-    std::printf("the logs part at decision %llu: %s\n", static_cast<unsigned long long>(r.matched), r.where.c_str());
+    std::printf("the logs part at decision %llu: %s\n", static_cast<unsigned long long>(r.firstDecision + r.matched),
+                r.where.c_str());
     for (const replay::DecisionView& d : r.before) std::printf("  both    %s\n", decisionLine(d, a->gizmoNames, false).c_str());
     std::printf("> first   %s\n", r.first ? decisionLine(*r.first, a->gizmoNames, true).c_str() : "(ends)");
     std::printf("> second  %s\n", r.second ? decisionLine(*r.second, b->gizmoNames, true).c_str() : "(ends)");

@@ -11,8 +11,15 @@ namespace gizmo::cli {
 struct RecordOptions {
   RunOptions run;
   std::string output;
+  // A branch (--from LOG): go on from a moment of LOG, at a board time or after a number of events.
+  std::string from;
+  std::optional<double> at;
+  std::optional<long long> event;
+  bool timeGiven = false;  // --time: the board time the branch runs to (default: LOG's)
 };
 int recordCommand(const RecordOptions& options);
+// `gizmo record --from` (branch_command.cpp).
+int branchCommand(const RecordOptions& options);
 
 struct ReplayOptions {
   std::string log;

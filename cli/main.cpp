@@ -34,11 +34,25 @@ int main(int argc, char** argv) {
 
   RecordOptions record;
   CLI::App* recordCmd = app.add_subcommand("record", "Simulate a board and write every decision to a replay log.\n"
-                                                     "Example: gizmo record --time 60 -o run.gzlog");
+                                                     "Example: gizmo record --time 60 -o run.gzlog\n"
+                                                     "Branch: gizmo record --from run.gzlog --at 12.5 --keys new.keys -o branch.gzlog");
   addRunOptions(*recordCmd, record.run);
   recordCmd->add_option("-o,--output", record.output, "The log file to write")->required();
   recordCmd->add_flag("--json", record.run.json, "Print the run's summary as one JSON object");
-  recordCmd->callback([&] { code = recordCommand(record); });
+  CLI::Option* from = recordCmd->add_option(
+      "--from", record.from,
+      "Branch: go on from a moment of this log (--at or --event) with new key input (--keys, or none);\n"
+      "--time is then the board time the branch runs to (default: the log's). docs/replay-format.md");
+  for (const char* name : {"board", "--model", "--precision", "--max-tick", "--strict"})
+    from->excludes(recordCmd->get_option(name));
+  CLI::Option* at = recordCmd->add_option("--at", record.at, "With --from: the board time to branch at (seconds)")->needs(from);
+  recordCmd->add_option("--event", record.event, "With --from: branch after this many of the log's events")
+      ->needs(from)
+      ->excludes(at);
+  recordCmd->callback([&] {
+    record.timeGiven = recordCmd->get_option("--time")->count() > 0;
+    code = recordCommand(record);
+  });
 
   ReplayOptions replay;
   CLI::App* replayCmd = app.add_subcommand(

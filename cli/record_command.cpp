@@ -11,6 +11,7 @@
 namespace gizmo::cli {
 
 int recordCommand(const RecordOptions& o) {
+  if (!o.from.empty()) return branchCommand(o);
   CheckedRun run;
   int code = kExitOk;
   if (!checkRun(o.run, "record", run, code)) return code;

@@ -25,6 +25,10 @@ void addBends(const SwingAnchor& a, double from, double to, std::vector<double>&
 
 FlipperSwings::FlipperSwings() { anchors_.push_back(SwingAnchor{-1, 0, 0, 0}); }
 
+FlipperSwings::FlipperSwings(const SwingAnchor& start, int lastDirection) : lastDirection_(lastDirection) {
+  anchors_.push_back(start);
+}
+
 double FlipperSwings::progressAt(double t) const {
   const SwingAnchor& a = anchors_.back();
   return std::clamp(a.s0 + a.direction * (t - a.t0), 0.0, swingTime());

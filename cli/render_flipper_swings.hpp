@@ -17,6 +17,8 @@ struct SwingAnchor {
 class FlipperSwings {
  public:
   FlipperSwings();
+  // A flipper as a branch log's first keyframe left it: moving from progress s0 at t0.
+  FlipperSwings(const SwingAnchor& start, int lastDirection);
   // The flipper's action (Flipper::fireTrigger): at rest swing forward, at the end swing back,
   // mid-swing reverse, blocked mid-swing go back the way it came.
   void action(std::int64_t event, double now);

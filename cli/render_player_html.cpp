@@ -137,6 +137,8 @@ Json runJson(const PlayerRun& run) {
           {"model", std::string(motionModelName(t.model))},
           {"precision", t.precision},
           {"duration", t.duration},
+          {"start_time", t.startTime},
+          {"first_event", t.firstEvent},
           {"end_time", t.endTime},
           {"tolerance", t.tolerance},
           {"truncation", t.truncation},

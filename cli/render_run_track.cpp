@@ -1,12 +1,14 @@
 // One log read into the arrays the pictures and the player draw from (see render_run_track.hpp).
 #include "render_run_track.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
 
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
+#include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/sink.hpp"
 #include "gizmo/core/gizmos/spawner.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
@@ -34,7 +36,27 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
   const PhysicsParams<double>& params = board->params();
   std::map<GizmoId, std::size_t> ballIndex;
   std::vector<BallPathBuilder> builders;
-  for (GizmoId id : board->ballIds()) {
+  // A branch log starts from its first keyframe: each ball and flipper as it left them, and its
+  // events are numbered from there.
+  std::optional<replay::StartView> branchStart;
+  if (log.reader.isBranch()) branchStart = replay::startView(log);
+  const std::uint64_t firstEvent = branchStart ? branchStart->events : 0;
+  track.startTime = branchStart ? branchStart->time : 0.0;
+  track.firstEvent = firstEvent;
+  if (branchStart) {
+    for (const replay::StartView::Ball& b : branchStart->balls) {
+      PathPiece start;
+      start.t0 = branchStart->time;
+      start.p = Vec2<double>(b.x, b.y);
+      start.v = Vec2<double>(b.vx, b.vy);
+      start.a = Vec2<double>(b.ax, b.ay);
+      start.logged = true;
+      ballIndex[b.id] = builders.size();
+      builders.emplace_back(track.model, params, tolerance, start, b.captured);
+      track.balls.push_back(BallTrack{b.id, replay::gizmoName(log.gizmoNames, b.id), {}});
+    }
+  }
+  for (GizmoId id : branchStart ? std::vector<GizmoId>{} : board->ballIds()) {
     const Ball<double>& ball = *board->gizmo(id).asBall();
     PathPiece start;
     start.p = ball.positionAt(0);
@@ -46,6 +68,12 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     track.balls.push_back(BallTrack{id, ball.name(), {}});
   }
   std::map<GizmoId, FlipperSwings> flippers;
+  // Anchors from the start are anchored where the run starts (the page takes their time from there).
+  if (branchStart)
+    for (const replay::StartView::Swing& f : branchStart->flippers) {
+      const double s = std::clamp(f.s0 + f.direction * (track.startTime - f.t0), 0.0, Flipper<double>::swingTime());
+      flippers.emplace(f.id, FlipperSwings(SwingAnchor{-1, track.startTime, s, f.direction}, f.lastDirection));
+    }
   // A spinner's turning as the player draws it: the seconds it has turned (its angle over its rate,
   // within a quarter turn, as the cross looks the same a quarter on), anchored at each action.
   std::map<GizmoId, std::vector<SwingAnchor>> spinners;
@@ -62,6 +90,13 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     if (specs[i].type == GizmoType::Sink) hold[id] = Sink<double>(specs[i]).centre();
     if (specs[i].type == GizmoType::Spawner) spawnAt[id] = Spawner<double>(specs[i]).centre();
   }
+  // A branch log's spinners as its first keyframe left them: the seconds turned past a quarter.
+  if (branchStart)
+    for (const replay::StartView::Turn& t : branchStart->spinners)
+      spinners[t.id] = {SwingAnchor{-1, track.startTime,
+                                    std::fmod(t.phase / kSpinnerTurnRate + (t.turning ? track.startTime - t.t0 : 0.0),
+                                              std::acos(-1.0) / 2 / kSpinnerTurnRate),
+                                    t.turning ? 1 : 0}};
   auto builderOf = [&](GizmoId id) -> BallPathBuilder* {
     const auto it = ballIndex.find(id);
     return it == ballIndex.end() ? nullptr : &builders[it->second];
@@ -81,8 +116,9 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
     const double now = d->time.value;
     switch (d->type) {
       case replay::DecisionType::Executed: {
-        if (d->eventIndex != track.eventTime.size()) throw std::runtime_error("the log's events are not numbered in order");
-        event = static_cast<std::int64_t>(d->eventIndex);
+        if (d->eventIndex != firstEvent + track.eventTime.size())
+          throw std::runtime_error("the log's events are not numbered in order");
+        event = static_cast<std::int64_t>(d->eventIndex - firstEvent);
         track.eventTime.push_back(now);
         track.eventKind.push_back(static_cast<std::uint8_t>(d->kind));
         track.eventA.push_back(d->a);
@@ -149,13 +185,13 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
       default: break;  // scheduling, ticks and time moves draw nothing
     }
   }
-  track.endTime = track.eventTime.empty() ? 0.0 : track.eventTime.back();
+  track.endTime = track.eventTime.empty() ? track.startTime : track.eventTime.back();
 
   // The state after the last event settles each ball's last piece.
   std::optional<replay::StateView> end;
   try {
     replay::SeekTarget target;
-    target.events = track.eventTime.size();
+    target.events = firstEvent + track.eventTime.size();
     end = replay::seekLog(log, target);
   } catch (const std::exception&) {
     end.reset();  // a log cut off inside its first chunk: the last pieces keep their default

@@ -33,11 +33,14 @@ struct RunTrack {
   MotionModel model = MotionModel::Ballistic;
   std::string precision;
   double duration = 0;  // as requested
+  double startTime = 0;  // where the log's run starts: 0, or a branch log's first keyframe
+  std::uint64_t firstEvent = 0;  // the events before that start (a branch log's first keyframe)
   double endTime = 0;   // the time of the last event read
   double tolerance = 0;
   std::string truncation;  // why the log stops early, when it does
   std::vector<std::string> gizmoNames;  // by id
-  // Executed events, in order: the i-th event is the one after which i + 1 events have run.
+  // Executed events, in order: the i-th event is the one after which i + 1 events have run (in a
+  // branch log, i + 1 events after its start).
   std::vector<double> eventTime;
   std::vector<std::uint8_t> eventKind;
   std::vector<std::int32_t> eventA, eventB, eventFeature;

@@ -38,6 +38,8 @@ int compare(const replay::OpenedLog& log, const ReplayOptions& o) {
   if (o.json) {
     nlohmann::ordered_json j{{"identical", r.identical}, {"events", r.events}, {"note", r.note},
                              {"board_warnings", log.header.boardWarnings}};
+    if (log.header.parent)
+      j["branch"] = {{"parent_digest", log.header.parent->parentDigest}, {"event", log.header.parent->event}};
     if (r.identical) j["compared"] = compared;
     if (!r.identical) {
       j["where"] = r.where;
@@ -55,6 +57,11 @@ int compare(const replay::OpenedLog& log, const ReplayOptions& o) {
                 static_cast<unsigned long long>(r.events), log.header.precision.c_str(),
                 std::string(motionModelName(log.header.model)).c_str(), compared);
     if (!r.note.empty()) std::printf("note: %s\n", r.note.c_str());
+    if (log.header.parent)
+      std::printf("note: a branch log, taken at event %llu of the log whose checksum is %016llx; its events are "
+                  "counted from that log's start\n",
+                  static_cast<unsigned long long>(log.header.parent->event),
+                  static_cast<unsigned long long>(log.header.parent->parentDigest));
     if (!log.header.boardWarnings.empty())
       std::printf("note: the board was read leniently (%zu warnings, above): this is a run of the board as read, "
                   "not of the file as written\n",

@@ -29,6 +29,8 @@
   if (data.path) data.path = null;
   document.getElementById("run-data").remove();
   const endTime = Math.max(...runs.map((r) => r.end), 1e-9);
+  // A branch log's run starts at its first keyframe: the player goes no earlier.
+  const startTime = Math.min(...runs.map((r) => r.start));
 
   // ---- Text -----------------------------------------------------------------------------------
   const hexFloat = BoardView.hexFloat;
@@ -64,10 +66,10 @@
     clock: document.getElementById("clock"), details: document.getElementById("details"),
     probe: document.getElementById("probe"),
   };
-  const state = { t: 0, done: 0, playing: false, selected: -1, zoomSpan: 0.25, lastFrame: 0, drawn: [], pathDrawn: [] };
+  const state = { t: startTime, done: 0, playing: false, selected: -1, zoomSpan: 0.25, lastFrame: 0, drawn: [], pathDrawn: [] };
 
   function seekTime(t) {
-    state.t = Math.min(endTime, Math.max(0, t));
+    state.t = Math.min(endTime, Math.max(startTime, t));
     state.done = eventsBy(main, state.t);
     redraw();
   }
@@ -75,7 +77,7 @@
   function seekEvents(n) {
     n = Math.min(main.count, Math.max(0, Math.floor(n)));
     state.done = n;
-    state.t = n > 0 ? main.time[n - 1] : 0;
+    state.t = n > 0 ? main.time[n - 1] : main.start;
     redraw();
   }
   function selectEvent(k) {
@@ -325,9 +327,9 @@
 
   // ---- Text beside the board --------------------------------------------------------------------
   function drawClock() {
-    ui.clock.textContent = "t = " + state.t.toFixed(6) + " s · " + state.done + " / " + main.count + " events";
+    ui.clock.textContent = "t = " + state.t.toFixed(6) + " s · " + (main.first + state.done) + " / " + (main.first + main.count) + " events";
     ui.seek.value = String(Math.round(state.t / endTime * 100000));
-    if (document.activeElement !== ui.eventNumber) ui.eventNumber.value = String(state.done);
+    if (document.activeElement !== ui.eventNumber) ui.eventNumber.value = String(main.first + state.done);
   }
 
   // One report made while an event ran: [decision type, rule, x, y] (render_run_track.hpp).
@@ -429,7 +431,7 @@
   // What the page drew, for a test to read: the board after state.done events, bit for bit.
   function writeProbe() {
     ui.probe.textContent = JSON.stringify({
-      events: state.done, time: hexFloat(state.t),
+      events: main.first + state.done, time: hexFloat(state.t),
       balls: state.drawn.map((b) => ({ name: b.name, x: hexFloat(b.x), y: hexFloat(b.y), x_value: b.x, y_value: b.y })),
       path: state.pathDrawn.map((b) => ({ name: b.name, x_value: b.x, y_value: b.y })),
       parting: path && path.parting ? path.parting.time : null,
@@ -475,7 +477,7 @@
   ui.seek.addEventListener("input", () => { pause(); seekTime(Number(ui.seek.value) / 100000 * endTime); });
   ui.eventNumber.addEventListener("change", () => {
     pause();
-    const n = Number(ui.eventNumber.value);
+    const n = Number(ui.eventNumber.value) - main.first;  // a branch log's events are counted from its parent's start
     if (n >= 1) selectEvent(n - 1); else seekEvents(0);
   });
   ui.play.addEventListener("click", () => (state.playing ? pause() : play()));
@@ -491,10 +493,11 @@
 
   // ---- Start ----------------------------------------------------------------------------------
   // FILE#event=N opens the board after N events (and shows event N − 1); FILE#time=S at S seconds.
+  // A branch log's events are numbered as in its parent: N counts from the parent's start.
   function openFragment() {
     const m = /^#(event|time)=([0-9.eE+-]+)$/.exec(window.location.hash);
     if (!m) return;
-    const value = Number(m[2]);
+    const value = Number(m[2]) - (m[1] === "event" ? main.first : 0);
     if (m[1] === "time") seekTime(value);
     else if (value >= 1 && value <= main.count) selectEvent(value - 1);
     else seekEvents(value);

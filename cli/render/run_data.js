@@ -22,7 +22,7 @@ const RunData = (function () {
     const ev = r.events;
     const run = {
       label: r.label, model: r.model, precision: r.precision, duration: r.duration,
-      end: r.end_time, tolerance: r.tolerance, truncation: r.truncation, gizmoNames: r.gizmo_names,
+      start: r.start_time || 0, first: r.first_event || 0, end: r.end_time, tolerance: r.tolerance, truncation: r.truncation, gizmoNames: r.gizmo_names,
       count: ev.count,
       time: arrayOf(Float64Array, ev.time), kind: arrayOf(Uint8Array, ev.kind),
       a: arrayOf(Int16Array, ev.a), b: arrayOf(Int16Array, ev.b), feature: arrayOf(Int16Array, ev.feature),
@@ -92,7 +92,8 @@ const RunData = (function () {
   // events share one time (the state after the first of them is not the state after the last).
   function eventsBy(run, t) { return countAtMost(run.time, run.count, t); }
 
-  function pieceTime(run, ball, i) { const e = ball.event[i]; return e < 0 ? 0 : run.time[e]; }
+  // A piece from the start is anchored where the run starts: 0, or a branch log's first keyframe.
+  function pieceTime(run, ball, i) { const e = ball.event[i]; return e < 0 ? run.start : run.time[e]; }
 
   // The ball's position in the simulator's own operations (Trajectory::positionAt), so that a
   // double run is drawn at exactly the positions it computed. Null before a spawned ball exists:
@@ -117,14 +118,14 @@ const RunData = (function () {
     const f = run.flippers.get(id);
     if (!f) return 0;
     const j = Math.max(0, countAtMost(f.event, f.count, done - 1) - 1);
-    const t0 = f.event[j] < 0 ? 0 : run.time[f.event[j]];
+    const t0 = f.event[j] < 0 ? run.start : run.time[f.event[j]];
     return f.s0[j] + f.direction[j] * (t - t0);
   }
 
   // The board after n events, as the player shows it when it has run n: the time of the n-th
   // event and each ball that exists then, with its position and velocity.
   function stateAfter(run, n) {
-    const t = n > 0 ? run.time[n - 1] : 0;
+    const t = n > 0 ? run.time[n - 1] : run.start;
     const balls = [];
     for (const ball of run.balls) {
       const at = ballAt(run, ball, t, n);

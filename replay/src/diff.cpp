@@ -2,8 +2,10 @@
 // kind of decision about the same gizmos and events; between logs of one scalar their values
 // must also be equal to the last bit, between different scalars their differences are measured.
 #include <cmath>
+#include <cstdio>
 #include <deque>
 
+#include "gizmo/replay/chunk.hpp"
 #include "gizmo/replay/format_error.hpp"
 #include "gizmo/replay/replay.hpp"
 
@@ -48,6 +50,50 @@ void count(std::vector<std::pair<std::string, std::pair<std::uint64_t, std::uint
   ++(second ? it->second.second : it->second.first);
 }
 
+// Where two logs' comparison starts: at the start for two ordinary logs; where the later one
+// starts when one is a branch of the other or both are branches of one parent (their decisions
+// before that are the parent's). A branch compared with a log it was not taken from is refused.
+struct CommonStart {
+  std::uint64_t decision = 0;
+  double time = -1;
+};
+std::uint64_t firstDecision(const OpenedLog& log, double* time) {
+  if (!log.header.parent || log.reader.chunks().empty()) return 0;
+  ChunkPreamble p;
+  readPreamble(log.reader.chunkPayload(0), p);
+  *time = p.time;
+  return p.decisionsDone;
+}
+CommonStart commonStart(const OpenedLog& a, const OpenedLog& b, std::vector<std::string>& notes) {
+  if (!a.header.parent && !b.header.parent) return {};
+  auto branchOf = [](const OpenedLog& branch, const OpenedLog& parent) {
+    return branch.header.parent && branch.header.parent->parentDigest == parent.reader.fileDigest();
+  };
+  CommonStart start;
+  double timeA = -1, timeB = -1;
+  const std::uint64_t fromA = firstDecision(a, &timeA), fromB = firstDecision(b, &timeB);
+  if (branchOf(b, a)) {
+    notes.push_back("the second log is a branch of the first at event " + std::to_string(b.header.parent->event) +
+                    "; they are compared from where it starts, decision " + std::to_string(fromB));
+  } else if (branchOf(a, b)) {
+    notes.push_back("the first log is a branch of the second at event " + std::to_string(a.header.parent->event) +
+                    "; they are compared from where it starts, decision " + std::to_string(fromA));
+  } else if (a.header.parent && b.header.parent && a.header.parent->parentDigest == b.header.parent->parentDigest) {
+    notes.push_back("the logs are branches of one log, at events " + std::to_string(a.header.parent->event) + " and " +
+                    std::to_string(b.header.parent->event) + "; they are compared from where the later starts");
+  } else {
+    const OpenedLog& branch = b.header.parent ? b : a;
+    char digest[17];
+    std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(branch.header.parent->parentDigest));
+    throw BranchError(std::string(b.header.parent ? "the second" : "the first") + " log is a branch of another log " +
+                      "(digest " + digest + "), not of the " + (b.header.parent ? "first" : "second") +
+                      ": a branch is compared only with its parent or a branch of the same parent");
+  }
+  start.decision = std::max(fromA, fromB);
+  start.time = std::max(timeA, timeB);
+  return start;
+}
+
 }  // namespace
 
 DiffReport diffLogs(const OpenedLog& a, const OpenedLog& b, std::size_t context, bool counts) {
@@ -65,10 +111,17 @@ DiffReport diffLogs(const OpenedLog& a, const OpenedLog& b, std::size_t context,
                                        "): decisions are compared without their values, whose differences are measured");
   if (a.header.keys.size() != b.header.keys.size()) r.notes.push_back("the logs have different key input");
 
-  DecisionStream sa(a), sb(b);
+  const CommonStart start = commonStart(a, b, r.notes);
+  r.firstDecision = start.decision;
+  DecisionStream sa(a, start.time), sb(b, start.time);
+  auto from = [&](DecisionStream& s) {
+    std::optional<DecisionView> d = s.next();
+    while (d && d->index < start.decision) d = s.next();
+    return d;
+  };
   std::deque<DecisionView> recent;
-  for (;;) {
-    std::optional<DecisionView> x = sa.next(), y = sb.next();
+  for (bool first = true;; first = false) {
+    std::optional<DecisionView> x = first ? from(sa) : sa.next(), y = first ? from(sb) : sb.next();
     if (!x && !y) break;
     if (x && y) {
       const std::string why = difference(*x, *y, r.sameScalar);

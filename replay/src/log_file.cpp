@@ -116,20 +116,22 @@ std::size_t readPreamble(std::span<const std::uint8_t> payload, ChunkPreamble& p
 
 // --- writing ------------------------------------------------------------------------------------
 
-LogWriter::LogWriter(const std::string& path) : path_(path) {
-  file_ = std::fopen(path.c_str(), "wb");
-  if (!file_) throw std::runtime_error(path + ": cannot create: " + std::strerror(errno));
-  start();
-}
+// The file is created when the header comes: a run that fails before it leaves no file.
+LogWriter::LogWriter(const std::string& path) : path_(path) {}
 
-LogWriter::LogWriter(std::vector<std::uint8_t>& memory) : path_("the log in memory"), memory_(&memory) { start(); }
+LogWriter::LogWriter(std::vector<std::uint8_t>& memory) : path_("the log in memory"), memory_(&memory) {}
 
-// The file header.
-void LogWriter::start() {
+// The file header, with the format version the header frame is written in.
+void LogWriter::start(std::uint16_t version) {
+  if (open_ || offset_ != 0) throw std::logic_error("log header already written");
+  if (!memory_) {
+    file_ = std::fopen(path_.c_str(), "wb");
+    if (!file_) throw std::runtime_error(path_ + ": cannot create: " + std::strerror(errno));
+  }
   open_ = true;
   ByteWriter w;
   w.bytes(kMagic.data(), kMagic.size());
-  w.u16(kFormatVersion);
+  w.u16(version);
   w.u16(0);
   if (!put(w.bytes())) throw std::runtime_error(path_ + ": write failed: " + std::strerror(errno));
   offset_ = w.size();
@@ -161,7 +163,15 @@ void LogWriter::frame(std::uint8_t type, std::span<const std::uint8_t> payload) 
   offset_ += head.size() + payload.size() + tail.size();
 }
 
-void LogWriter::header(std::span<const std::uint8_t> payload) { frame(std::uint8_t(FrameType::Header), payload); }
+void LogWriter::header(std::span<const std::uint8_t> payload) {
+  start(kFormatVersion);
+  frame(std::uint8_t(FrameType::Header), payload);
+}
+
+void LogWriter::branchHeader(std::span<const std::uint8_t> payload) {
+  start(kBranchFormatVersion);
+  frame(std::uint8_t(FrameType::Header), payload);
+}
 
 void LogWriter::chunk(std::span<const std::uint8_t> payload, const ChunkEntry& entry) {
   ChunkEntry e = entry;
@@ -211,9 +221,9 @@ LogReader::LogReader(std::unique_ptr<ByteSource> source, bool verifyChecksums)
   ByteReader r(std::span<const std::uint8_t>(head, kFileHeaderSize));
   r.span(kMagic.size());
   version_ = r.u16();
-  if (version_ > kFormatVersion)
+  if (version_ > kBranchFormatVersion)
     throw FormatError("log format version " + std::to_string(version_) + " is newer than this build reads (" +
-                          std::to_string(kFormatVersion) + ")",
+                          std::to_string(kBranchFormatVersion) + ")",
                       8);
   if (version_ == 0) throw FormatError("log format version 0 does not exist", 8);
   if (version_ < kFormatVersion)
@@ -357,9 +367,17 @@ std::vector<std::uint8_t> LogReader::chunkPayload(std::size_t i) const {
   if (next != expected) throw FormatError("chunk " + std::to_string(i) + " does not end where the next begins", e.offset);
   ChunkPreamble p;
   readPreamble(payload, p);
-  if (!sameEntry(entryOf(p, e.offset), e) || p.hasKeyframe != (i > 0))
+  if (!sameEntry(entryOf(p, e.offset), e) || p.hasKeyframe != (i > 0 || isBranch()))
     throw FormatError("chunk " + std::to_string(i) + " disagrees with the index", e.offset);
   return payload;
+}
+
+bool LogReader::isBranch() const { return version_ >= kBranchFormatVersion; }
+
+std::uint64_t LogReader::fileDigest() const {
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(source_->size()));
+  source_->read(0, bytes.size(), bytes.data());
+  return checksum64(bytes);
 }
 
 }  // namespace gizmo::replay

@@ -7,6 +7,7 @@
 #include "gizmo/io/board_writer.hpp"
 #include "gizmo/replay/checksum.hpp"
 #include "gizmo/replay/format_error.hpp"
+#include "gizmo/replay/log_format.hpp"
 
 #ifndef GIZMO_VERSION
 #error "GIZMO_VERSION is defined by replay/CMakeLists.txt"
@@ -72,11 +73,15 @@ std::vector<std::uint8_t> encodeHeader(const LogHeader& h) {
   for (const std::string& warning : h.boardWarnings) writeString(w, warning);
   w.varint(h.params.size());
   w.bytes(h.params.data(), h.params.size());
+  if (h.parent) {
+    w.u64(h.parent->parentDigest);
+    w.varint(h.parent->event);
+  }
   const auto b = w.bytes();
   return {b.begin(), b.end()};
 }
 
-LogHeader decodeHeader(std::span<const std::uint8_t> payload) {
+LogHeader decodeHeader(std::span<const std::uint8_t> payload, std::uint16_t version) {
   ByteReader r(payload);
   LogHeader h;
   h.toolkit = readString(r, 256, "toolkit version");
@@ -110,6 +115,13 @@ LogHeader decodeHeader(std::span<const std::uint8_t> payload) {
   for (std::uint64_t i = 0; i < warnings; ++i) h.boardWarnings.push_back(readString(r, 4096, "board warning"));
   const std::string params = readString(r, 4096, "parameters");
   h.params.assign(params.begin(), params.end());
+  if (version >= kBranchFormatVersion) {
+    if (r.atEnd()) throw FormatError("header: a branch log (format version 5) whose header does not name its parent", r.position());
+    BranchOrigin parent;
+    parent.parentDigest = r.u64();
+    parent.event = r.varint();
+    h.parent = parent;
+  }
   if (!r.atEnd()) throw FormatError("header: bytes after its end", r.position());
   return h;
 }

@@ -73,10 +73,12 @@ PhysicsParams<Real> paramsOf(const OpenedLog& log) {
 // The header frame's payload for a run of `request` on `board`.
 template <class Real>
 std::vector<std::uint8_t> headerBytes(const RunRequest& request, const PrecisionChoice& precision,
-                                      const GameBoard<Real>& board, const std::vector<std::string>& boardWarnings) {
+                                      const GameBoard<Real>& board, const std::vector<std::string>& boardWarnings,
+                                      const std::optional<BranchOrigin>& parent = std::nullopt) {
   LogHeader h = headerFor(request, precisionName(precision), scalarName<Real>(), scalarFormat<Real>(),
                           paramBytes(board.params()));
   h.boardWarnings = boardWarnings;
+  h.parent = parent;
   return encodeHeader(h);
 }
 

@@ -18,7 +18,7 @@ std::string gizmoName(const std::vector<std::string>& names, GizmoId id) {
 
 OpenedLog openLog(std::unique_ptr<ByteSource> source, bool verifyChecksums) {
   LogReader reader(std::move(source), verifyChecksums);
-  LogHeader header = decodeHeader(reader.headerPayload());
+  LogHeader header = decodeHeader(reader.headerPayload(), reader.formatVersion());
   RunRequest request = requestOf(header);
   const std::optional<PrecisionChoice> precision = parsePrecision(header.precision);
   if (!precision) throw FormatError("header: unknown precision '" + header.precision + "'", 0);

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "log_views.hpp"
+#include "run_start.hpp"
 #include "gizmo/replay/decision_digest.hpp"
 #include "gizmo/replay/recorder.hpp"
 
@@ -148,7 +148,8 @@ class DigestChecker final : public BoardObserver<Real> {
  public:
   struct Differs {};
 
-  DigestChecker(const LogReader& log, const GameBoard<Real>& board) : log_(log), board_(board) {
+  DigestChecker(const LogReader& log, const GameBoard<Real>& board, std::uint64_t ticksDone)
+      : log_(log), board_(board), ticks_(ticksDone) {
     readChunk(0);
   }
 
@@ -218,14 +219,14 @@ std::string notesOf(const OpenedLog& log, bool headerDiffers) {
 // A replay by digests on a board prepared for the log's run, or nullopt when something differs.
 template <class Real>
 std::optional<ReplayReport> replayByDigests(const OpenedLog& log, std::unique_ptr<GameBoard<Real>> board,
-                                            bool headerDiffers) {
+                                            const RunStart& start, bool headerDiffers) {
   RunEnd run;
   try {
-    DigestChecker<Real> checker(log.reader, *board);
+    DigestChecker<Real> checker(log.reader, *board, start.ticksDone);
     board->setObserver(&checker);
     run.completed = true;
     try {
-      continueRun(*board, log.request, 0);
+      continueRun(*board, log.request, std::int64_t(start.ticksDone));
     } catch (const StallError& e) {
       run.completed = false;
       run.message = e.what();
@@ -254,32 +255,37 @@ bool hasDigests(const OpenedLog& log) {
 template <class Real>
 ReplayReport replayAs(const OpenedLog& log, ReplayMethod method) {
   ReplayReport report;
-  std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(log.request);
+  const RunStart start = runStartOf(log);
+  std::unique_ptr<GameBoard<Real>> board = startBoard<Real>(log);
   if (paramBytes(board->params()) != log.header.params) {
     report.identical = false;
     report.where = "this build derives different simulation parameters from the log's board";
     return report;
   }
   // The header this build would write for the run (its toolkit version, its canonical board).
-  const bool headerDiffers = !sameElements(headerBytes(log.request, log.precision, *board, log.header.boardWarnings), log.reader.headerPayload());
+  const bool headerDiffers =
+      !sameElements(headerBytes(log.request, log.precision, *board, log.header.boardWarnings, log.header.parent),
+                    log.reader.headerPayload());
   const bool digestsTried = method == ReplayMethod::Digests && hasDigests(log);
   if (digestsTried) {
-    if (std::optional<ReplayReport> r = replayByDigests<Real>(log, std::move(board), headerDiffers)) return *r;
-    board = prepareRun<Real>(log.request);
+    if (std::optional<ReplayReport> r = replayByDigests<Real>(log, std::move(board), start, headerDiffers)) return *r;
+    board = startBoard<Real>(log);
   }
   ComparingSink sink(log.reader);
-  Recorder<Real> recorder(sink, *board);
-  board->setObserver(&recorder);
+  std::optional<Recorder<Real>> recorder;
+  if (log.reader.isBranch()) recorder.emplace(sink, *board, typename Recorder<Real>::Start{start.ticksDone, start.decisionsDone});
+  else recorder.emplace(sink, *board);
+  board->setObserver(&*recorder);
   bool completed = true;
   std::string error;
   try {
     try {
-      continueRun(*board, log.request, 0);
+      continueRun(*board, log.request, std::int64_t(start.ticksDone));
     } catch (const StallError& e) {
       completed = false;
       error = e.what();
     }
-    recorder.finish(completed, error);
+    recorder->finish(completed, error);
   } catch (const ComparingSink::LogEnds&) {
     report.note = log.reader.truncation() + "; every decision it holds replays identically";
     report.events = sink.eventsInLog;

@@ -1,7 +1,7 @@
 // The state of a log's run at an event or a time, from the nearest keyframe (replay.hpp: seekLog).
-#include <stdexcept>
+#include <type_traits>
 
-#include "log_views.hpp"
+#include "run_start.hpp"
 
 namespace gizmo::replay {
 namespace {
@@ -29,52 +29,60 @@ StateView stateOf(const GameBoard<Real>& board, const Real& at, const std::vecto
   return s;
 }
 
-// A board of the log's run at the start of chunk i, its keyframe restored and checked.
-template <class Real>
-std::unique_ptr<GameBoard<Real>> boardAtChunk(const OpenedLog& log, std::size_t i, std::uint64_t* ticksDone) {
-  const std::vector<std::uint8_t> payload = log.reader.chunkPayload(i);
-  const OpenedChunk<Real> opened = openChunk<Real>(payload);
-  std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(log.request);
-  if (opened.keyframe) {
-    try {
-      board->restoreState(*opened.keyframe);
-    } catch (const StateError& e) {
-      throw FormatError(std::string("chunk ") + std::to_string(i) + ": keyframe does not fit the board: " + e.what(),
-                        log.reader.chunks()[i].offset);
-    }
-    if (stateHash(stateBytes(board->saveState())) != opened.keyframeHash)
-      throw FormatError("chunk " + std::to_string(i) + ": the restored keyframe does not hash as recorded",
-                        log.reader.chunks()[i].offset);
-  }
-  *ticksDone = opened.preamble.ticksDone;
-  return board;
-}
-
 template <class Real>
 StateView seekAs(const OpenedLog& log, const SeekTarget& target) {
-  const std::vector<ChunkEntry>& chunks = log.reader.chunks();
-  if (chunks.empty()) throw FormatError("the log holds no chunk", 0);
-  std::size_t i = 0;
-  while (i + 1 < chunks.size() &&
-         (target.events ? chunks[i + 1].eventsDone <= *target.events : chunks[i + 1].time <= *target.time))
-    ++i;
-  std::uint64_t ticksDone = 0;
-  std::unique_ptr<GameBoard<Real>> board = boardAtChunk<Real>(log, i, &ticksDone);
-  if (target.time && fromDouble<Real>(*target.time) < board->now() && i > 0)
-    board = boardAtChunk<Real>(log, --i, &ticksDone);
-  typename GameBoard<Real>::RunLimit limit;
-  if (target.events) limit.events = *target.events;
-  if (target.time) limit.time = fromDouble<Real>(*target.time);
-  board->setRunLimit(limit);
-  continueRun(*board, log.request, std::int64_t(ticksDone));
-  if (target.events && board->executedTotal() != *target.events)
-    throw std::out_of_range("the run has " + std::to_string(board->executedTotal()) + " events, fewer than " +
-                            std::to_string(*target.events));
-  const Real at = target.time ? maxOf(fromDouble<Real>(*target.time), board->now()) : board->now();
-  return stateOf(*board, at, log.gizmoNames);
+  SeekStart<Real> start = seekStart<Real>(log, target);
+  runToTarget(start, log, target);
+  const Real at = target.time ? maxOf(fromDouble<Real>(*target.time), start.board->now()) : start.board->now();
+  return stateOf(*start.board, at, log.gizmoNames);
 }
 
 }  // namespace
+
+RunStartBoard startBoardInDouble(const OpenedLog& log) {
+  if (log.precision.kind != Precision::Double)
+    throw FormatError("the log was made with " + log.header.scalar + ", not double", 0);
+  return detail::withLogScalar(log, [&]<class Real>() -> RunStartBoard {
+    if constexpr (std::is_same_v<Real, double>) {
+      const detail::RunStart start = detail::runStartOf(log);
+      return RunStartBoard{detail::startBoard<double>(log), start.ticksDone, start.eventsDone};
+    } else {
+      throw FormatError("the log was made with " + log.header.scalar + ", not double", 0);
+    }
+  });
+}
+
+StartView startView(const OpenedLog& log) {
+  return detail::withLogScalar(log, [&]<class Real>() {
+    const std::unique_ptr<GameBoard<Real>> board = detail::startBoard<Real>(log);
+    board->tickSpan(Real(0), 1, Real(0));  // built, as its run builds it first (a restored board is)
+    StartView v;
+    v.events = board->executedTotal();
+    v.time = toDouble(board->now());
+    for (GizmoId id : board->ballIds()) {
+      const Ball<Real>& b = *board->gizmo(id).asBall();
+      const Vec2<Real> p = b.positionAt(board->now()), u = b.velocityAt(board->now());
+      v.balls.push_back(StartView::Ball{id, toDouble(p.x), toDouble(p.y), toDouble(u.x), toDouble(u.y),
+                                        toDouble(b.acceleration().x), toDouble(b.acceleration().y), b.captured()});
+    }
+    for (std::size_t g = 0; g < board->gizmoCount(); ++g) {
+      const AbstractGizmo<Real>& gizmo = board->gizmo(GizmoId(g));
+      const GizmoKind kind = gizmo.kind();
+      if (kind != GizmoKind::LeftFlipper && kind != GizmoKind::RightFlipper && kind != GizmoKind::Spinner) continue;
+      // A flipper: t0, s0; direction, lastDirection, … A spinner: t0, phase; quarter, turning, …
+      // (Flipper and Spinner saveState; docs/replay-format.md, "A gizmo's numbers").
+      GizmoState<Real> st;
+      gizmo.saveState(st);
+      if (kind == GizmoKind::Spinner)
+        v.spinners.push_back(StartView::Turn{GizmoId(g), toDouble(st.reals.at(0)), toDouble(st.reals.at(1)),
+                                             st.ints.at(1) != 0});
+      else
+        v.flippers.push_back(StartView::Swing{GizmoId(g), toDouble(st.reals.at(0)), toDouble(st.reals.at(1)),
+                                              int(st.ints.at(0)), int(st.ints.at(1))});
+    }
+    return v;
+  });
+}
 
 StateView seekLog(const OpenedLog& log, const SeekTarget& target) {
   return detail::withLogScalar(log, [&]<class Real>() { return seekAs<Real>(log, target); });

@@ -26,3 +26,13 @@ gizmo_browser_test(box2d_overlay
 # before (the balls drawn are exactly the log's).
 gizmo_browser_test(spawned_balls
   BOARD=${GIZMO_BROWSER_FIXTURES}/boards/gizmos/spawner.txt TIME=4 PICK=30 TOLERANCE=0)
+# A branch log (gizmo record --from) taken mid-tick with a flipper raised: drawn from its first
+# keyframe on, with its events numbered as in its parent, each ball exactly where the log has it.
+gizmo_browser_test(branch_log
+  BOARD=${GIZMO_BROWSER_FIXTURES}/boards/spec-example.txt KEYS=${GIZMO_BROWSER_FIXTURES}/keys/flippers.keys
+  TIME=6 PICK=3 TOLERANCE=0 BRANCH_AT=150)
+# A branch of a spawner board's run, taken with spawned balls in play: each drawn from the
+# branch's first keyframe on.
+gizmo_browser_test(branch_log_spawned
+  BOARD=${GIZMO_BROWSER_FIXTURES}/boards/gizmos/spawner.txt KEYS=${GIZMO_BROWSER_FIXTURES}/keys/flippers.keys
+  TIME=4 PICK=12 TOLERANCE=0 BRANCH_AT=60)

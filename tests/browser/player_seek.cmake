@@ -9,8 +9,9 @@
 #   `gizmo crosscheck --path-out` (same board, keys and time), and is also opened at the time of the
 #   path file's COMPARE_SAMPLE-th sample line: every Box2D ball must be drawn at that sample's
 #   position (within WITHIN when given, else to 10^-9 L), and the page must mark where the runs part.
+#   With BRANCH_AT, a branch of the run at that event (gizmo record --from) is what is checked.
 # Variables: GIZMO, BOARD, TIME, PICK, WORK_DIR; optional KEYS, TOLERANCE, MODEL, WITHIN, COMPARE_DT,
-# COMPARE_SAMPLE.
+# COMPARE_SAMPLE, BRANCH_AT.
 cmake_minimum_required(VERSION 3.25)
 foreach(required GIZMO BOARD TIME PICK WORK_DIR)
   if(NOT DEFINED ${required})
@@ -62,6 +63,16 @@ endmacro()
 set(record_args record ${BOARD} --time ${TIME} -o ${log})
 add_run_options(record_args)
 gizmo_step(${record_args})
+# With BRANCH_AT, the page plays a branch of that run taken at that event with the same keys; its
+# events are numbered as in the run.
+if(DEFINED BRANCH_AT)
+  set(branch_args record --from ${log} --event ${BRANCH_AT} -o ${WORK_DIR}/branch.gzlog)
+  if(DEFINED KEYS)
+    list(APPEND branch_args --keys ${KEYS})
+  endif()
+  gizmo_step(${branch_args})
+  set(log ${WORK_DIR}/branch.gzlog)
+endif()
 
 # The PICK-th collision; the page is asked for the board after it (event index + 1 events).
 gizmo_step(dump ${log} --kind collision --json)

@@ -3,7 +3,7 @@
 // kept, docs/render.md, "Large runs"), the page's run data is decoded by the
 // module the page runs, and the board after N events (each ball's name, position and velocity, and
 // the time) must be exactly what `gizmo replay LOG --event N --json` says, for N at the start, at
-// the end and in between.
+// the end and in between; and the same for a branch of each log taken halfway (gizmo record --from).
 //   node player_state.mjs GIZMO RUN_DATA_JS WORK_DIR BOARD SECONDS [BOARD SECONDS...]
 import { execFileSync } from "node:child_process";
 import { createRequire } from "node:module";
@@ -18,10 +18,9 @@ const fail = (what) => { console.error(`FAIL ${what}`); failures++; };
 const run = (...args) =>
   execFileSync(gizmo, args, { encoding: "utf8", maxBuffer: 1 << 28, stdio: ["ignore", "pipe", "ignore"] });
 
-for (let i = 0; i < boards.length; i += 2) {
-  const board = boards[i], seconds = boards[i + 1], name = path.basename(board);
-  const log = path.join(work, name + ".gzlog"), page = path.join(work, name + ".html");
-  run("record", board, "--time", seconds, "-o", log);
+// The page's state after k of the log's events (counted from the log's start, or a branch log's)
+// against `gizmo replay --event` of the same event, which counts from the parent's start.
+function check(name, log, page) {
   run("render", log, "-o", page, "--tolerance", "0");  // every piece kept: the drawn state is the run's
   const html = fs.readFileSync(page, "utf8");
   const open = '<script id="run-data" type="application/json">';
@@ -32,7 +31,7 @@ for (let i = 0; i < boards.length; i += 2) {
   const moments = [...new Set([0, 1, 2, Math.floor(n / 3), Math.floor(n / 2), n - 1, n])].filter((k) => k >= 0 && k <= n);
   for (const k of moments) {
     const ours = RunData.stateAfter(runData, k);
-    const theirs = JSON.parse(run("replay", log, "--event", String(k), "--json"));
+    const theirs = JSON.parse(run("replay", log, "--event", String(runData.first + k), "--json"));
     const where = `${name} after ${k} events`;
     if (ours.time !== theirs.time.value) fail(`${where}: time ${ours.time}, gizmo replay ${theirs.time.value}`);
     if (ours.balls.length !== theirs.balls.length) {
@@ -47,5 +46,17 @@ for (let i = 0; i < boards.length; i += 2) {
     });
   }
   console.log(`${name}: ${moments.length} moments of ${n} events agree with gizmo replay --event`);
+  return n;
+}
+
+for (let i = 0; i < boards.length; i += 2) {
+  const board = boards[i], seconds = boards[i + 1], name = path.basename(board);
+  const log = path.join(work, name + ".gzlog");
+  run("record", board, "--time", seconds, "-o", log);
+  const n = check(name, log, path.join(work, name + ".html"));
+  // A branch taken halfway, with no keys: drawn from its first keyframe on.
+  const branch = path.join(work, name + ".branch.gzlog");
+  run("record", "--from", log, "--event", String(Math.floor(n / 2)), "-o", branch);
+  check(name + " (branch)", branch, path.join(work, name + ".branch.html"));
 }
 process.exit(failures === 0 ? 0 : 1);

@@ -768,10 +768,16 @@ TEST(ReplayLog, BadFilesSayWhatIsWrong) {
   }
   {
     Bytes b = good;
-    b[8] = 5;  // u16 format version, little-endian
+    b[8] = 6;  // u16 format version, little-endian
     b[9] = 0;
     const std::string message = openedMessage(b);
-    EXPECT_TRUE(contains(message, "version 5 is newer than this build reads (4)")) << message;
+    EXPECT_TRUE(contains(message, "version 6 is newer than this build reads (5)")) << message;
+  }
+  {
+    Bytes b = good;
+    b[8] = 5;  // a branch log's version on an ordinary log: its header names no parent
+    const std::string message = openedMessage(b);
+    EXPECT_TRUE(contains(message, "does not name its parent")) << message;
   }
   {
     Bytes b = good;

@@ -122,6 +122,8 @@ class CertifyingObserver final : public BoardObserver<double> {
     live_.push_back(e);
   }
   void eventRemoved(const Event<double>& e) override { forget(e); }
+  // The events already queued where the run starts (a branch log's keyframe).
+  void adoptQueue(const std::vector<Event<double>>& queued) { live_.insert(live_.end(), queued.begin(), queued.end()); }
 
   void eventExecuted(const Event<double>& e, const EventOutcome<double>&) override {
     forget(e);
@@ -364,21 +366,30 @@ class CertifyingObserver final : public BoardObserver<double> {
 
 }  // namespace
 
-CertifyReport certifyRun(const RunRequest& request, const CertifyOptions& options) {
+// The run from `board` as it stands, `ticksDone` ticks into it (0: as built).
+CertifyReport certifyFrom(GameBoard<double>& board, const RunRequest& request, std::uint64_t ticksDone,
+                          std::uint64_t eventsDone, const CertifyOptions& options) {
   CertifyReport report;
-  std::unique_ptr<GameBoard<double>> board = prepareRun<double>(request);
-  CertifyingObserver observer(*board, options, report);
-  board->setObserver(&observer);
-  if (options.maxEvents != 0) board->setRunLimit({options.maxEvents, std::nullopt});
-  continueRun(*board, request, 0);
+  CertifyingObserver observer(board, options, report);
+  observer.adoptQueue(board.pendingEvents());
+  board.setObserver(&observer);
+  if (options.maxEvents != 0) board.setRunLimit({eventsDone + options.maxEvents, std::nullopt});
+  continueRun(board, request, std::int64_t(ticksDone));
   return report;
+}
+
+CertifyReport certifyRun(const RunRequest& request, const CertifyOptions& options) {
+  std::unique_ptr<GameBoard<double>> board = prepareRun<double>(request);
+  return certifyFrom(*board, request, 0, 0, options);
 }
 
 CertifyReport certifyLog(const replay::OpenedLog& log, const CertifyOptions& options) {
   if (log.precision.kind != Precision::Double)
     throw CertifyError("certified decisions need a log of a double run; this log was recorded in " +
                        precisionName(log.precision));
-  return certifyRun(log.request, options);
+  // A branch log's run starts from its first keyframe.
+  replay::RunStartBoard start = replay::startBoardInDouble(log);
+  return certifyFrom(*start.board, log.request, start.ticksDone, start.eventsDone, options);
 }
 
 }  // namespace gizmo::verify

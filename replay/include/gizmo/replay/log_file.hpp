@@ -36,6 +36,9 @@ class ChunkSink {
  public:
   virtual ~ChunkSink() = default;
   virtual void header(std::span<const std::uint8_t> payload) = 0;
+  // The header of a branch log (format version 5, log_header.hpp: BranchOrigin); a sink that
+  // writes the file header writes that version.
+  virtual void branchHeader(std::span<const std::uint8_t> payload) { header(payload); }
   // entry.offset is filled in by the sink.
   virtual void chunk(std::span<const std::uint8_t> payload, const ChunkEntry& entry) = 0;
   virtual void finish(const RunEnd& end) = 0;
@@ -62,10 +65,11 @@ inline ChunkEntry entryOf(const ChunkPreamble& p, std::uint64_t offset) {
 // them to bytes in memory (a web page that hands the log to its user, `gizmo play`).
 class LogWriter final : public ChunkSink {
  public:
-  explicit LogWriter(const std::string& path);  // throws std::runtime_error naming the path
+  explicit LogWriter(const std::string& path);  // the file is created by header(); throws std::runtime_error naming the path
   explicit LogWriter(std::vector<std::uint8_t>& memory);
   ~LogWriter() override;
   void header(std::span<const std::uint8_t> payload) override;
+  void branchHeader(std::span<const std::uint8_t> payload) override;
   void chunk(std::span<const std::uint8_t> payload, const ChunkEntry& entry) override;
   void finish(const RunEnd& end) override;
   std::uint64_t bytesWritten() const { return offset_; }
@@ -73,7 +77,7 @@ class LogWriter final : public ChunkSink {
 
  private:
   void frame(std::uint8_t type, std::span<const std::uint8_t> payload);
-  void start();
+  void start(std::uint16_t version);
   bool put(std::span<const std::uint8_t> bytes);  // to the file or the memory; false if it failed
   std::string path_;
   std::FILE* file_ = nullptr;
@@ -103,6 +107,10 @@ class LogReader {
 
   const std::vector<std::uint8_t>& headerPayload() const { return header_; }
   std::uint16_t formatVersion() const { return version_; }
+  // A branch log (format version 5): its header names its parent, its first chunk has a keyframe.
+  bool isBranch() const;
+  // checksum64 of the whole file's bytes: how a branch log names its parent.
+  std::uint64_t fileDigest() const;
   const std::vector<ChunkEntry>& chunks() const { return chunks_; }
   // The chunk's payload, checked against its checksum and its place in the index.
   std::vector<std::uint8_t> chunkPayload(std::size_t i) const;

@@ -9,6 +9,10 @@ namespace gizmo::replay {
 inline constexpr std::string_view kMagic = "GIZMOLOG";
 inline constexpr std::string_view kTrailerMagic = "GIZMOEND";
 inline constexpr std::uint16_t kFormatVersion = 4;
+// A branch log (a run taken over at a moment of another log, `gizmo record --from`): version 4
+// with the header's parent fields, and a keyframe in its first chunk too. Every other log is
+// still written as version 4, byte for byte as before.
+inline constexpr std::uint16_t kBranchFormatVersion = 5;
 inline constexpr std::size_t kFileHeaderSize = 12;  // magic, u16 version, u16 reserved
 inline constexpr std::size_t kFrameHeaderSize = 5;  // u8 type, u32 payload length
 inline constexpr std::size_t kFrameChecksumSize = 8;

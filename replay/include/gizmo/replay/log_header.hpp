@@ -3,6 +3,7 @@
 // text with its hash, the motion model, the scalar, every simulation parameter, the duration
 // and the key input.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -10,9 +11,20 @@
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/replay/bytes.hpp"
 #include "gizmo/replay/format_error.hpp"
+#include "gizmo/replay/log_format.hpp"
 #include "gizmo/replay/scalar_codec.hpp"
 
 namespace gizmo::replay {
+
+// Where a branch log (format version 5) was taken from: its parent log, named by the checksum64
+// of the parent file's bytes, and the branch point, the number of the parent's events before the
+// branch takes over.
+struct BranchOrigin {
+  std::uint64_t parentDigest = 0;
+  std::uint64_t event = 0;
+
+  bool operator==(const BranchOrigin&) const = default;
+};
 
 struct LogHeader {
   std::string toolkit;    // the gizmo version that wrote the log
@@ -29,13 +41,16 @@ struct LogHeader {
   // empty when it was read as written. Since format version 3.
   std::vector<std::string> boardWarnings;
   std::vector<std::uint8_t> params;  // PhysicsParams in the scalar's exact encoding (paramBytes)
+  // A branch log's parent (format version 5 only); absent in every other log.
+  std::optional<BranchOrigin> parent;
 };
 
 // The header of a run about to be recorded in scalar `precision`.
 LogHeader headerFor(const RunRequest& request, const std::string& precision, const std::string& scalar,
                     const std::string& format, std::vector<std::uint8_t> params);
 std::vector<std::uint8_t> encodeHeader(const LogHeader& h);
-LogHeader decodeHeader(std::span<const std::uint8_t> payload);  // throws FormatError
+// The payload of a log of format `version`: a branch log's (version 5) ends with its parent.
+LogHeader decodeHeader(std::span<const std::uint8_t> payload, std::uint16_t version = kFormatVersion);  // throws FormatError
 // The run the header describes; throws FormatError when the embedded board does not read back
 // or does not match its hash.
 RunRequest requestOf(const LogHeader& h);

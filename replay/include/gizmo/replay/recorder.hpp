@@ -43,6 +43,18 @@ class Recorder final : public BoardObserver<Real> {
   Recorder(ChunkSink& sink, const GameBoard<Real>& board) : sink_(sink), board_(board), encoder_(chunk_, board.params()) {
     begin(std::nullopt);
   }
+  // A recording that starts from the board's state now, at a tick boundary (a branch log, or a
+  // log's run recorded again from one of its keyframes): its first chunk has that state as its
+  // keyframe, and counts ticks and decisions on from those done before it.
+  struct Start {
+    std::uint64_t ticksDone = 0;
+    std::uint64_t decisionsDone = 0;
+  };
+  Recorder(ChunkSink& sink, const GameBoard<Real>& board, const Start& start)
+      : sink_(sink), board_(board), encoder_(chunk_, board.params()), decisionsBefore_(start.decisionsDone),
+        ticks_(start.ticksDone) {
+    begin(board.saveState());
+  }
 
   void eventScheduled(const Event<Real>& e) override {
     if (next_) beginNext();
@@ -118,7 +130,7 @@ class Recorder final : public BoardObserver<Real> {
     ChunkPreamble p;
     p.ticksDone = ticks_;
     p.eventsDone = state ? state->executedTotal : 0;
-    p.decisionsDone = encoder_.records();
+    p.decisionsDone = decisionsBefore_ + encoder_.records();
     p.time = state ? toDouble(state->now) : 0.0;
     p.hasKeyframe = state.has_value();
     preamble_.clear();
@@ -154,6 +166,7 @@ class Recorder final : public BoardObserver<Real> {
   std::vector<std::uint8_t> preamble_;
   ChunkEntry entry_;
   std::size_t limit_ = kChunkTargetBytes;
+  std::uint64_t decisionsBefore_ = 0;
   std::uint64_t ticks_ = 0;
   std::optional<BoardState<Real>> next_;  // the keyframe of the chunk to begin
 };

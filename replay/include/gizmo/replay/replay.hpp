@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -126,11 +127,82 @@ struct SeekTarget {
 };
 StateView seekLog(const OpenedLog& log, const SeekTarget& target);
 
+// The board a double log's run starts from, for those who run it again themselves (gizmo verify
+// --certify): as built, its keys scheduled, or a branch log's first keyframe restored onto it;
+// with the ticks and events done before it (0 but in a branch log). Throws FormatError for a log
+// of another scalar.
+struct RunStartBoard {
+  std::unique_ptr<GameBoard<double>> board;
+  std::uint64_t ticksDone = 0;
+  std::uint64_t eventsDone = 0;
+};
+RunStartBoard startBoardInDouble(const OpenedLog& log);
+
+// The state a log's run starts from, rounded to doubles, for drawing it (gizmo render): the board
+// as built at 0, or a branch log's first keyframe. Each ball's position, velocity and
+// acceleration there and whether it is held; each flipper's swing (progress s0 at t0, moving at
+// direction, docs/physics.md §2) and each spinner's turn.
+struct StartView {
+  std::uint64_t events = 0;
+  double time = 0;
+  struct Ball {
+    GizmoId id = kNoGizmo;
+    double x = 0, y = 0, vx = 0, vy = 0, ax = 0, ay = 0;
+    bool captured = false;
+  };
+  std::vector<Ball> balls;
+  struct Swing {
+    GizmoId id = kNoGizmo;
+    double t0 = 0, s0 = 0;
+    int direction = 0, lastDirection = 1;
+  };
+  std::vector<Swing> flippers;
+  struct Turn {  // a spinner: its cross at phase (radians past a quarter turn) at t0, turning or not
+    GizmoId id = kNoGizmo;
+    double t0 = 0, phase = 0;
+    bool turning = false;
+  };
+  std::vector<Turn> spinners;
+};
+StartView startView(const OpenedLog& log);
+
+// --- branching ---------------------------------------------------------------------------------
+// A run taken over at a moment of a log (`gizmo record --from`): the branch goes on from that
+// moment with new key input, and its log (format version 5) stands alone: its header names the
+// parent, its first chunk's keyframe is the parent's state at the last tick boundary at or before
+// the branch point, and its records go on from there (docs/replay-format.md, "Branch logs").
+struct BranchRequest {
+  SeekTarget at;  // the branch point: after this many of the parent's events, or at this board time
+  // The key input from the branch point on, at board times. Keys earlier than the branch point are
+  // left out, and so are keys at its very time that the parent had already applied then, so that
+  // the parent's own key script, given whole, goes on as the parent did.
+  std::vector<TimedKey> keys;
+  std::optional<double> duration;  // the board time the branch runs to; the parent's by default
+};
+struct BranchResult {
+  RecordResult record;
+  BranchOrigin origin;       // the parent's digest and the branch point's event index
+  Exact time;                // the branch point's board time
+  std::uint64_t startEvents = 0;  // the parent's events at the tick boundary the branch log starts from
+  std::size_t keysLeftOut = 0;    // keys of the request before the branch point
+};
+// A branch point or branch request that cannot be served: the parent is cut off, the point lies
+// beyond its end (or before a branch log's start), the branch would end before its point.
+class BranchError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+// Everything that can fail is checked before the sink is given the header, so a refused branch
+// leaves no file. Throws BranchError, or FormatError for a damaged parent.
+BranchResult recordBranch(const OpenedLog& parent, const BranchRequest& request, ChunkSink& sink);
+
 // --- two logs ----------------------------------------------------------------------------------
 struct DiffReport {
   bool parted = false;
   bool sameScalar = true;       // values are compared exactly only between logs of one scalar
   std::uint64_t matched = 0;    // decisions alike before the logs part
+  // The first decision compared: 0, or where a branch starts (a branch log holds nothing before).
+  std::uint64_t firstDecision = 0;
   std::string where;            // what differs at the parting decision
   std::vector<std::string> notes;  // e.g. the logs are of different boards or models
   std::vector<DecisionView> before;  // the last alike decisions (of the first log)
