@@ -184,7 +184,7 @@ class SceneRunner {
     }
     r.events = first.steps;
     setCost(r, seconds, scene_.request.duration);
-    const StudyRun run = studyRunOf(first, dt, instants_, scene_.request.board.balls.size());
+    const StudyRun run = studyRunOf(first, instants_, scene_.request.board.balls.size());
     setErrors(r, compareWithReference(reference_, run, scene_.request.duration, matchWindow(dt)),
               reference_.collisions.size(), run.collisions.size());
   }
