@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "board_input.hpp"
+#include "gizmo/verify/box2d3_run.hpp"
 #include "gizmo/verify/box2d_crosscheck.hpp"
 #include "gizmo/verify/box2d_mapping.hpp"
 #include "gizmo/verify/box2d_time_of_impact.hpp"
@@ -114,19 +115,40 @@ EngineSide box2dSide(const verify::CrosscheckOptions& options) {
   side.json = {{"engine", "box2d-2.4"},
                {"box2d_version", verify::box2dVersion()},
                {"bullet", options.box2d.bullet},
+               {"continuous", options.box2d.continuous},
                {"restitution_threshold", options.box2d.restitutionThreshold},
                {"velocity_iterations", options.box2d.velocityIterations},
                {"position_iterations", options.box2d.positionIterations},
                {"mapping", mappingJson()}};
   char text[512];
   std::snprintf(text, sizeof text,
-                "box2d      %s, bullets %s, restitution threshold %g m/s, %d velocity / %d position iterations\n"
+                "box2d      %s, bullets %s, continuous %s, restitution threshold %g m/s, %d velocity / %d position iterations\n"
                 "mapping    polygons inset by the %g L skin; Box2D's time of impact stops %g L past contact (+- %g);\n"
                 "           at most %g L and %g rad per step\n",
-                verify::box2dVersion().c_str(), options.box2d.bullet ? "on" : "off", options.box2d.restitutionThreshold,
+                verify::box2dVersion().c_str(), options.box2d.bullet ? "on" : "off", options.box2d.continuous ? "on" : "off",
+                options.box2d.restitutionThreshold,
                 options.box2d.velocityIterations, options.box2d.positionIterations, verify::kBox2dPolygonSkin,
                 3 * verify::kBox2dLinearSlop, verify::kBox2dToiTolerance, verify::kBox2dMaxTranslation,
                 verify::kBox2dMaxRotation);
+  side.text = text;
+  return side;
+}
+
+EngineSide box2d3Side(const verify::Box2dOptions& options, const std::string& name) {
+  EngineSide side;
+  side.json = {{"engine", "box2d-v3"},
+               {"box2d_version", name},
+               {"bullet", options.bullet},
+               {"continuous", options.continuous},
+               {"restitution_threshold", options.restitutionThreshold},
+               {"sub_steps", verify::kBox2d3SubSteps},
+               {"mapping", mappingJson()}};
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "box2d v3   %s under node, bullets %s, continuous %s, restitution threshold %g m/s, %d sub-steps\n"
+                "mapping    the same bodies and shapes as Box2D 2.4's (polygons inset by the %g L skin, rounded by it)\n",
+                name.c_str(), options.bullet ? "on" : "off", options.continuous ? "on" : "off",
+                options.restitutionThreshold, verify::kBox2d3SubSteps, verify::kBox2dPolygonSkin);
   side.text = text;
   return side;
 }
@@ -290,6 +312,43 @@ bool writePath(const CheckedRun& run, const CrosscheckCommandOptions& o, const v
   return true;
 }
 
+// --engine box2d-v3: the scene run by the node program at each step size, each run read back as
+// a trace and compared as a trace is.
+int box2d3Command(const CheckedRun& run, const CrosscheckCommandOptions& o, const verify::CrosscheckOptions& options) {
+  if (const std::optional<std::string> why = verify::box2d3CannotModel(run.request.board)) {
+    std::cerr << "gizmo crosscheck: " << *why << '\n';
+    return kExitBadInput;
+  }
+  if (const std::optional<std::string> why = verify::box2d3Unavailable()) {
+    std::cerr << "gizmo crosscheck: --engine box2d-v3: " << *why << '\n';
+    return kExitBadInput;
+  }
+  double longestWindow = 0;
+  for (double dt : options.steps) longestWindow = std::max(longestWindow, verify::matchWindow(dt));
+  RunRequest longer = run.request;
+  longer.duration += longestWindow;
+  std::vector<verify::EngineRun> runs;
+  std::string name;
+  try {
+    for (double dt : options.steps) {
+      verify::Box2dOptions b = options.box2d;
+      b.dt = dt;
+      verify::EngineTrace trace = verify::runBox2d3(longer, b, run.request.duration);
+      trace.run.dt = dt;
+      name = trace.engine;
+      runs.push_back(std::move(trace.run));
+    }
+  } catch (const std::runtime_error& e) {
+    std::cerr << "gizmo crosscheck: " << e.what() << '\n';
+    return kExitBadInput;
+  }
+  const verify::CrosscheckReport report = verify::crosscheckRuns(run.request, runs);
+  const EngineSide engine = box2d3Side(options.box2d, name);
+  if (o.run.json) printRunsJson(run, o, engine, report);
+  else printRunsText(run, o, engine, report);
+  return kExitOk;
+}
+
 // --trace FILE: another engine's run, read whole before anything is printed, and compared as
 // Box2D's runs are.
 int traceCommand(const CrosscheckCommandOptions& o) {
@@ -335,6 +394,19 @@ int crosscheckCommand(const CrosscheckCommandOptions& o) {
     std::cerr << "gizmo crosscheck: --path-out writes the path of a whole run, not of --toi-sweeps\n";
     return kExitBadInput;
   }
+  if (o.engine != "box2d-2.4" && o.engine != "box2d-v3") {
+    std::cerr << "gizmo crosscheck: --engine '" << o.engine << "' is not box2d-2.4 or box2d-v3\n";
+    return kExitBadInput;
+  }
+  if (o.engine == "box2d-v3" && o.toiSweeps > 0) {
+    std::cerr << "gizmo crosscheck: --toi-sweeps compares b2TimeOfImpact, which Box2D 2.4 has and box2d3-wasm does not "
+                 "expose: use --engine box2d-2.4\n";
+    return kExitBadInput;
+  }
+  if (o.engine == "box2d-v3" && !o.pathOut.empty()) {
+    std::cerr << "gizmo crosscheck: --path-out writes Box2D 2.4's path: use --engine box2d-2.4\n";
+    return kExitBadInput;
+  }
   if (o.toiSweeps > 0) return toiSurveyCommand(o);
   if (!o.trace.empty()) return traceCommand(o);
   CheckedRun run;
@@ -348,12 +420,14 @@ int crosscheckCommand(const CrosscheckCommandOptions& o) {
   options.request = run.request;
   options.steps.clear();
   if (!parseSteps(o.steps, o.run.time, options.steps)) return kExitBadInput;
+  options.box2d.bullet = !o.noBullet;
+  options.box2d.continuous = !o.noContinuous;
+  options.box2d.restitutionThreshold = o.restitutionThreshold;
+  if (o.engine == "box2d-v3") return box2d3Command(run, o, options);
   if (!o.pathOut.empty() && options.steps.size() != 1) {
     std::cerr << "gizmo crosscheck: --path-out writes the path of one step size: give --dt one (for example --dt 1/240)\n";
     return kExitBadInput;
   }
-  options.box2d.bullet = !o.noBullet;
-  options.box2d.restitutionThreshold = o.restitutionThreshold;
   options.keepBox2dSamples = !o.pathOut.empty();
   const verify::CrosscheckReport report = verify::crosscheck(options);
   if (!o.pathOut.empty() && !writePath(run, o, options, report)) return kExitBadInput;

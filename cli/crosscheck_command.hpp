@@ -15,7 +15,9 @@ inline constexpr const char* kDefaultCrosscheckSteps = "1/60,1/120,1/240,1/480";
 struct CrosscheckCommandOptions {
   RunOptions run;
   std::string steps = kDefaultCrosscheckSteps;  // --dt: comma-separated seconds, each a number or 1/N
+  std::string engine = "box2d-2.4";  // or box2d-v3 (the node program, verify/box2d3)
   bool noBullet = false;
+  bool noContinuous = false;
   double restitutionThreshold = 0;
   int toiSweeps = 0;       // > 0: the time-of-impact survey instead of whole runs
   std::uint64_t seed = 1;  // the survey's seed

@@ -110,8 +110,13 @@ int main(int argc, char** argv) {
   box2dOptions.push_back(
       crosscheckCmd->add_option("--dt", crosscheck.steps, "Box2D step sizes, seconds, comma-separated (a number or 1/N)")
           ->capture_default_str());
+  box2dOptions.push_back(crosscheckCmd->add_option("--engine", crosscheck.engine,
+                                                   "box2d-2.4 (linked in) or box2d-v3 (box2d3-wasm under node)")
+                             ->capture_default_str());
   box2dOptions.push_back(crosscheckCmd->add_flag("--no-bullet", crosscheck.noBullet,
                                                  "Balls are not bullets (Box2D may let two fast balls pass)"));
+  box2dOptions.push_back(crosscheckCmd->add_flag("--no-continuous", crosscheck.noContinuous,
+                                                 "No continuous collision at all (Box2D may let a ball pass a gizmo)"));
   box2dOptions.push_back(crosscheckCmd
                              ->add_option("--restitution-threshold", crosscheck.restitutionThreshold,
                                           "Box2D's restitution threshold, m/s (its default is 1: slower hits do not bounce)")
