@@ -9,10 +9,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "gizmo/io/board_file.hpp"
 #include "gizmo/verify/box2d3_run.hpp"
 #include "gizmo/verify/box2d_mapping.hpp"
-#include "support/paths.hpp"
+#include "support/fixture_request.hpp"
 
 namespace gizmo::verify {
 namespace {
@@ -29,10 +28,7 @@ bool inCi() {
   }
 
 RunRequest board(const std::string& path, double seconds) {
-  RunRequest r;
-  r.board = io::readBoardFile(test::fixturePath("boards/" + path)).board;
-  r.duration = seconds;
-  return r;
+  return test::fixtureRequest("boards/" + path, MotionModel::Ballistic, seconds);
 }
 
 // One step size of the v3 cross-check, as `gizmo crosscheck --engine box2d-v3` runs it.

@@ -31,6 +31,7 @@ class TraceReader {
     }
     if (line_ == 0) fail(0, "the trace is empty: its first line is the header");
     if (trace_.run.record.samples.size() < 2) fail(line_, "the trace has no step after time 0");
+    trace_.run.record.steps = trace_.run.record.samples.size() - 1;
     const double last = trace_.run.record.samples.back().time;
     if (last < end_)
       fail(line_, "the trace ends at " + number(last) + " s, before the end of the comparison, " + number(end_) +
