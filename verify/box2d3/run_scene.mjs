@@ -119,9 +119,16 @@ const fraction = (ball, [x, y]) => {
   return Math.min(1, Math.max(0, ((x - ball.from[0]) * px + (y - ball.from[1]) * py) / l2));
 };
 
+// A vector handed back by the library, read and its handle freed (the step loop makes millions).
+const read = (handle) => {
+  const xy = [handle.x, handle.y];
+  handle.delete();
+  return xy;
+};
+
 const state = (ball) => {
-  const p = b2.b2Body_GetPosition(ball.id), v = b2.b2Body_GetLinearVelocity(ball.id);
-  return { x: p.x, y: p.y, vx: v.x, vy: v.y };
+  const [x, y] = read(b2.b2Body_GetPosition(ball.id)), [vx, vy] = read(b2.b2Body_GetLinearVelocity(ball.id));
+  return { x, y, vx, vy };
 };
 
 const dt = scene.dt, n = scene.sub_steps;
@@ -133,11 +140,12 @@ for (let k = 0; k < count; ++k) {
   for (const ball of balls) {
     const now = state(ball);
     const v = frictionApplied([now.vx, now.vy], dt);
-    b2.b2Body_SetLinearVelocity(ball.id, vec(v));
-    const p = b2.b2Body_GetPosition(ball.id);
-    ball.from = [p.x, p.y];
+    const velocity = vec(v);
+    b2.b2Body_SetLinearVelocity(ball.id, velocity);
+    velocity.delete();
+    ball.from = [now.x, now.y];
     // Where n sub-steps of semi-implicit Euler take it, unhindered.
-    ball.to = [p.x + dt * v[0], p.y + dt * v[1] + dt * dt * scene.gravity * (n + 1) / (2 * n)];
+    ball.to = [now.x + dt * v[0], now.y + dt * v[1] + dt * dt * scene.gravity * (n + 1) / (2 * n)];
   }
   b2.b2World_Step(world, dt, n);
   const step = { t: (k + 1) * dt, balls: {}, contacts: [] };
@@ -156,6 +164,7 @@ for (let k = 0; k < count; ++k) {
   for (let i = 0; i < events.hitCount; ++i) {
     const hit = events.GetHitEvent(i);
     let a = nameOfShape.get(hit.shapeIdA.index1), b = nameOfShape.get(hit.shapeIdB.index1);
+    hit.delete();
     if (!ballByName.has(a)) [a, b] = [b, a];
     if (!ballByName.has(a)) continue;
     if (ballByName.has(b) && b < a) [a, b] = [b, a];
@@ -163,9 +172,9 @@ for (let k = 0; k < count; ++k) {
     seen.add(`${a}\u0000${b}`);
     const ball = ballByName.get(a);
     const earlier = ball.previous;
-    const at = earlier && earlier.cut && !earlier.hit ? earlier : { t0, alpha: ball.alpha, from: ball.from, to: ball.to };
+    const at = earlier && earlier.cut && !earlier.hit ? earlier : { t0, t1: step.t, alpha: ball.alpha, from: ball.from, to: ball.to };
     const contact = {
-      t: at.t0 + at.alpha * dt,
+      t: Math.min(at.t0 + at.alpha * dt, at.t1),  // t0 + dt may round past the step's end
       ball: a,
       other: b,
       x: at.from[0] + at.alpha * (at.to[0] - at.from[0]),
@@ -174,8 +183,9 @@ for (let k = 0; k < count; ++k) {
     (at === earlier ? steps[steps.length - 1] : step).contacts.push(contact);
     ball.hit = true;
   }
+  events.delete();
   for (const ball of balls) {
-    ball.previous = { t0, alpha: ball.alpha, from: ball.from, to: ball.to, cut: ball.alpha < 1 - 1e-4, hit: ball.hit === true };
+    ball.previous = { t0, t1: step.t, alpha: ball.alpha, from: ball.from, to: ball.to, cut: ball.alpha < 1 - 1e-4, hit: ball.hit === true };
     ball.hit = false;
   }
   steps.push(step);
