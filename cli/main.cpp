@@ -116,22 +116,38 @@ int main(int argc, char** argv) {
   CLI::App* crosscheckCmd = app.add_subcommand(
       "crosscheck", "Run a board in our simulator and in Box2D at each step size and match their collisions: what\n"
                     "agreed and how closely, what either side missed, trajectory and energy divergence, cost.\n"
+                    "With --trace FILE: another engine's run of the board, read from JSON lines (docs/verification.md).\n"
                     "With --toi-sweeps N: our times of impact against b2TimeOfImpact on N random sweeps per feature kind.\n"
                     "Example: gizmo crosscheck fixtures/boards/box2d/speed-cap.txt --time 2 --dt 1/60,1/240 --json");
   addRunOptions(*crosscheckCmd, crosscheck.run, false);
-  crosscheckCmd->add_option("--dt", crosscheck.steps, "Box2D step sizes, seconds, comma-separated (a number or 1/N)")
-      ->capture_default_str();
-  crosscheckCmd->add_flag("--no-bullet", crosscheck.noBullet, "Balls are not bullets (Box2D may let two fast balls pass)");
-  crosscheckCmd->add_option("--restitution-threshold", crosscheck.restitutionThreshold,
-                            "Box2D's restitution threshold, m/s (its default is 1: slower hits do not bounce)")
-      ->capture_default_str();
-  crosscheckCmd->add_option("--toi-sweeps", crosscheck.toiSweeps,
-                            "Compare times of impact on this many seeded random sweeps per feature kind instead");
-  crosscheckCmd->add_option("--seed", crosscheck.seed, "The sweeps' seed")->capture_default_str();
-  crosscheckCmd->add_option("--path-out", crosscheck.pathOut,
-                            "Write Box2D's ball paths (one --dt) to this file, for gizmo render LOG --compare FILE");
+  std::vector<CLI::Option*> box2dOptions;
+  box2dOptions.push_back(
+      crosscheckCmd->add_option("--dt", crosscheck.steps, "Box2D step sizes, seconds, comma-separated (a number or 1/N)")
+          ->capture_default_str());
+  box2dOptions.push_back(crosscheckCmd->add_option("--engine", crosscheck.engine,
+                                                   "box2d-2.4 (linked in) or box2d-v3 (box2d3-wasm under node)")
+                             ->capture_default_str());
+  box2dOptions.push_back(crosscheckCmd->add_flag("--no-bullet", crosscheck.noBullet,
+                                                 "Balls are not bullets (Box2D may let two fast balls pass)"));
+  box2dOptions.push_back(crosscheckCmd->add_flag("--no-continuous", crosscheck.noContinuous,
+                                                 "No continuous collision at all (Box2D may let a ball pass a gizmo)"));
+  box2dOptions.push_back(crosscheckCmd
+                             ->add_option("--restitution-threshold", crosscheck.restitutionThreshold,
+                                          "Box2D's restitution threshold, m/s (its default is 1: slower hits do not bounce)")
+                             ->capture_default_str());
+  box2dOptions.push_back(crosscheckCmd->add_option(
+      "--toi-sweeps", crosscheck.toiSweeps, "Compare times of impact on this many seeded random sweeps per feature kind instead"));
+  box2dOptions.push_back(crosscheckCmd->add_option("--seed", crosscheck.seed, "The sweeps' seed")->capture_default_str());
+  box2dOptions.push_back(crosscheckCmd->add_option(
+      "--path-out", crosscheck.pathOut, "Write Box2D's ball paths (one --dt) to this file, for gizmo render LOG --compare FILE"));
+  crosscheckCmd->add_option("--trace", crosscheck.trace,
+                            "Compare with another engine's run of the board, read from this trace (JSON lines) instead of Box2D");
   crosscheckCmd->add_flag("--json", crosscheck.run.json, "Print one JSON object");
-  crosscheckCmd->callback([&] { code = crosscheckCommand(crosscheck); });
+  crosscheckCmd->callback([&] {
+    for (const CLI::Option* option : box2dOptions)
+      if (option->count() > 0 && crosscheck.box2dOptionGiven.empty()) crosscheck.box2dOptionGiven = option->get_name();
+    code = crosscheckCommand(crosscheck);
+  });
 
   FuzzOptions fuzz;
   CLI::App* fuzzCmd = app.add_subcommand(

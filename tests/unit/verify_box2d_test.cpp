@@ -232,7 +232,7 @@ StepComparison crosscheckAt(const RunRequest& request, double dt, Box2dOptions b
 TEST(Box2dScenes, FastBallsTunnelWithoutBullets) {
   const RunRequest r = scene("fast-balls-head-on.txt", 0.5);
   const StepComparison bullet = crosscheckAt(r, 1.0 / 60);
-  EXPECT_EQ(bullet.missedByBox2d, 0u);
+  EXPECT_EQ(bullet.missedByThem, 0u);
   EXPECT_EQ(bullet.missedByUs, 0u);
   EXPECT_EQ(bullet.matchedWithinToi, bullet.matched);
   Box2dOptions noBullet;
@@ -252,7 +252,7 @@ TEST(Box2dScenes, SpeedCapSlowsTheBallForGood) {
   EXPECT_GT(capped.maxEnergyDifference, 0.5);  // ½·120² against ½·200²: 64 % of the energy gone
   const StepComparison free = crosscheckAt(r, 1.0 / 120);
   EXPECT_EQ(free.speedCappedSteps, 0u);
-  EXPECT_EQ(free.missedByBox2d + free.missedByUs, 0u);
+  EXPECT_EQ(free.missedByThem + free.missedByUs, 0u);
   EXPECT_LT(free.maxEnergyDifference, 1e-6);
 }
 
@@ -264,9 +264,9 @@ TEST(Box2dScenes, SlowBouncesAreLost) {
   defaults.restitutionThreshold = 1;
   const StepComparison sticky = crosscheckAt(r, 1.0 / 240, defaults);
   const StepComparison zero = crosscheckAt(r, 1.0 / 240);
-  EXPECT_LE(sticky.box2dCollisions, 1u);
-  EXPECT_GT(zero.box2dCollisions, sticky.box2dCollisions);
-  EXPECT_GT(zero.missedByBox2d, 0u);
+  EXPECT_LE(sticky.theirCollisions, 1u);
+  EXPECT_GT(zero.theirCollisions, sticky.theirCollisions);
+  EXPECT_GT(zero.missedByThem, 0u);
 }
 
 // Box2D's cross turns on the core's schedule: D meets the turning cross 0.87 s in, 0.024 s after it
@@ -275,7 +275,7 @@ TEST(Box2dScenes, TurningSpinnerHitIsMatched) {
   const RunRequest r = scene("spinner-turning.txt", 1.5);
   const StepComparison c = crosscheckAt(r, 1.0 / 480);
   EXPECT_EQ(c.matched, 2u);  // B on the still cross, D on the turning one
-  EXPECT_EQ(c.missedByBox2d, 0u);
+  EXPECT_EQ(c.missedByThem, 0u);
   EXPECT_EQ(c.missedByUs, 0u);
   EXPECT_LT(c.maxTimeError, 0.005);
 }

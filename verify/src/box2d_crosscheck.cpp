@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <stdexcept>
 #include <tuple>
 
 #include "gizmo/verify/box2d_mapping.hpp"
+#include "trace.hpp"
 
 namespace gizmo::verify {
 namespace {
@@ -48,12 +51,13 @@ class OurRecorder final : public BoardObserver<double> {
 
 }  // namespace
 
-TrajectorySample interpolate(const std::vector<TrajectorySample>& samples, double dt, double t) {
-  const std::size_t last = samples.size() - 1;
-  const std::size_t k = std::min(last, static_cast<std::size_t>(std::max(0.0, std::floor(t / dt))));
-  if (k == last) return samples[last];
-  const TrajectorySample& a = samples[k];
-  const TrajectorySample& b = samples[k + 1];
+TrajectorySample interpolate(const std::vector<TrajectorySample>& samples, double t) {
+  const auto after = std::upper_bound(samples.begin(), samples.end(), t,
+                                      [](double time, const TrajectorySample& s) { return time < s.time; });
+  if (after == samples.end()) return samples.back();
+  if (after == samples.begin()) return samples.front();
+  const TrajectorySample& a = *(after - 1);
+  const TrajectorySample& b = *after;
   const double f = std::clamp((t - a.time) / (b.time - a.time), 0.0, 1.0);
   TrajectorySample s;
   s.time = t;
@@ -64,19 +68,20 @@ TrajectorySample interpolate(const std::vector<TrajectorySample>& samples, doubl
 
 namespace {
 
-void compareCollisions(const RunRecord& ours, const RunRecord& box2d, StepComparison& out) {
-  const auto pairs = matchCollisions(ours.collisions, box2d.collisions, out.matchWindow);
-  std::vector<bool> oursMatched(ours.collisions.size()), theirsMatched(box2d.collisions.size());
+void compareCollisions(const RunRecord& ours, const RunRecord& theirs, StepComparison& out) {
+  const auto pairs = matchCollisions(ours.collisions, theirs.collisions, out.matchWindow);
+  std::vector<bool> oursMatched(ours.collisions.size()), theirsMatched(theirs.collisions.size());
   double sum = 0;
-  // The ball's centre stops up to target + tolerance past contact in Box2D (3.25 linear slops).
+  // The ball's centre stops up to target + tolerance past contact in Box2D (3.25 linear slops):
+  // another engine's positions are held to the same depth.
   const double toiDepth = 3 * kBox2dLinearSlop + kBox2dToiTolerance;
   std::size_t counted = 0;
   for (const auto& [i, j] : pairs) {
     oursMatched[i] = theirsMatched[j] = true;
-    if (std::min(ours.collisions[i].time, box2d.collisions[j].time) > out.end) continue;
+    if (std::min(ours.collisions[i].time, theirs.collisions[j].time) > out.end) continue;
     ++counted;
-    const double dtErr = std::fabs(box2d.collisions[j].time - ours.collisions[i].time);
-    const double dp = length(box2d.collisions[j].position - ours.collisions[i].position);
+    const double dtErr = std::fabs(theirs.collisions[j].time - ours.collisions[i].time);
+    const double dp = length(theirs.collisions[j].position - ours.collisions[i].position);
     out.maxTimeError = std::max(out.maxTimeError, dtErr);
     out.maxPositionError = std::max(out.maxPositionError, dp);
     out.matchedWithinToi += dp <= toiDepth;
@@ -90,36 +95,101 @@ void compareCollisions(const RunRecord& ours, const RunRecord& box2d, StepCompar
   auto missed = [&](const std::vector<CollisionRecord>& list, const std::vector<bool>& matched, std::size_t k) {
     return !matched[k] && list[k].time <= end;
   };
-  out.missedByBox2d = out.missedByUs = 0;
-  for (std::size_t k = 0; k < oursMatched.size(); ++k) out.missedByBox2d += missed(ours.collisions, oursMatched, k);
-  for (std::size_t k = 0; k < theirsMatched.size(); ++k) out.missedByUs += missed(box2d.collisions, theirsMatched, k);
+  out.theirCollisions = std::count_if(theirs.collisions.begin(), theirs.collisions.end(),
+                                      [&](const CollisionRecord& r) { return r.time <= end; });
+  out.missedByThem = out.missedByUs = 0;
+  for (std::size_t k = 0; k < oursMatched.size(); ++k) out.missedByThem += missed(ours.collisions, oursMatched, k);
+  for (std::size_t k = 0; k < theirsMatched.size(); ++k) out.missedByUs += missed(theirs.collisions, theirsMatched, k);
   std::size_t i = 0, j = 0;
   while (i < oursMatched.size() && !missed(ours.collisions, oursMatched, i)) ++i;
-  while (j < theirsMatched.size() && !missed(box2d.collisions, theirsMatched, j)) ++j;
-  const bool ourFirst = i < oursMatched.size() && (j == theirsMatched.size() || ours.collisions[i].time <= box2d.collisions[j].time);
+  while (j < theirsMatched.size() && !missed(theirs.collisions, theirsMatched, j)) ++j;
+  const bool ourFirst = i < oursMatched.size() && (j == theirsMatched.size() || ours.collisions[i].time <= theirs.collisions[j].time);
   if (ourFirst) out.firstUnmatched = UnmatchedCollision{"ours", ours.collisions[i]};
-  else if (j < theirsMatched.size()) out.firstUnmatched = UnmatchedCollision{"box2d", box2d.collisions[j]};
+  else if (j < theirsMatched.size()) out.firstUnmatched = UnmatchedCollision{"theirs", theirs.collisions[j]};
 }
 
-void compareTrajectories(const RunRecord& ours, const RunRecord& box2d, StepComparison& out) {
+void compareTrajectories(const RunRecord& ours, const RunRecord& theirs, StepComparison& out) {
   std::size_t n = 0;
   while (n < ours.samples.size() && ours.samples[n].time <= out.end) ++n;
   const std::size_t every = std::max<std::size_t>(1, (n + 49) / 50);
   for (std::size_t k = 0; k < n; ++k) {
     const TrajectorySample& a = ours.samples[k];
-    const TrajectorySample b = interpolate(box2d.samples, out.dt, a.time);
+    const TrajectorySample b = interpolate(theirs.samples, a.time);
     double d = 0;
     for (std::size_t i = 0; i < a.positions.size(); ++i) d = std::max(d, length(b.positions[i] - a.positions[i]));
     out.maxDivergence = std::max(out.maxDivergence, d);
     for (std::size_t l = 0; l < kDivergenceLevels.size(); ++l)
       if (!out.divergenceFrom[l] && d > kDivergenceLevels[l]) out.divergenceFrom[l] = a.time;
+    if (!out.parting && d > kPartingLevel) out.parting = PartingCheck{a.time, a.positions, b.positions, {}, 0, 0, ""};
     if (k % every == 0 || k + 1 == n) out.divergence.emplace_back(a.time, d);
     // Relative to the larger of our energy now and at the start: a capture takes a ball's energy
     // to 0 on one side first, which would otherwise divide by nothing.
     const double scale = std::max(std::fabs(a.energy), std::fabs(ours.samples.front().energy));
     if (scale > 0) out.maxEnergyDifference = std::max(out.maxEnergyDifference, std::fabs(b.energy - a.energy) / scale);
   }
-  out.energyEnd = interpolate(box2d.samples, out.dt, out.end).energy;
+  out.energyEnd = interpolate(theirs.samples, out.end).energy;
+}
+
+// Every engine run: the collisions (when the engine gave them) and the paths.
+StepComparison compareRun(const RunRecord& ours, const RunRecord& theirs, double dt, double end, bool withCollisions) {
+  StepComparison c;
+  c.dt = dt;
+  c.end = end;
+  c.matchWindow = matchWindow(dt);
+  c.collisionsCompared = withCollisions;
+  if (withCollisions) compareCollisions(ours, theirs, c);
+  compareTrajectories(ours, theirs, c);
+  c.wallSeconds = theirs.wallSeconds;
+  return c;
+}
+
+// Our run of the request on past its end by `window`, and the report's figures of our side.
+RunRecord runOurSide(const RunRequest& request, double window, CrosscheckReport& report) {
+  const double end = request.duration;
+  RunRequest longer = request;
+  longer.duration = end + window;
+  std::uint64_t eventsLonger = 0;
+  RunRecord ours = runOurs(longer, eventsLonger);
+  report.ourCollisions = std::count_if(ours.collisions.begin(), ours.collisions.end(),
+                                       [&](const CollisionRecord& c) { return c.time <= end; });
+  report.energyStart = ours.samples.front().energy;
+  for (const TrajectorySample& s : ours.samples)
+    if (s.time <= end) report.ourEnergyEnd = s.energy;
+  const auto start = std::chrono::steady_clock::now();
+  report.ourEvents = simulate<double>(request).total;
+  report.ourWallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return ours;
+}
+
+double largestDistance(const std::vector<Vec2<double>>& a, const std::vector<Vec2<double>>& b) {
+  double d = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, length(a[i] - b[i]));
+  return d;
+}
+
+// Where the paths part, the balls of a run of the same request at mpfr:256: one run for every
+// parting (each is one of our tick boundaries, where that run can be sampled).
+void checkPartings(const RunRequest& request, std::vector<StepComparison>& steps) {
+  TraceExtras extras;
+  for (const StepComparison& s : steps)
+    if (s.parting) extras.sampleAt.push_back(s.parting->time);
+  if (extras.sampleAt.empty()) return;
+  std::sort(extras.sampleAt.begin(), extras.sampleAt.end());
+  extras.sampleAt.erase(std::unique(extras.sampleAt.begin(), extras.sampleAt.end()), extras.sampleAt.end());
+  std::vector<TraceSample> samples;
+  extras.samples = &samples;
+  extras.stopAtDifference = false;
+  traceAt(PrecisionChoice{Precision::Mpfr, 256}, request, nullptr, nullptr, std::numeric_limits<std::size_t>::max(), extras);
+  for (StepComparison& s : steps) {
+    if (!s.parting) continue;
+    PartingCheck& p = *s.parting;
+    const auto at = std::find_if(samples.begin(), samples.end(), [&](const TraceSample& r) { return r.time == p.time; });
+    if (at == samples.end()) throw std::logic_error("the mpfr:256 run was not sampled where the paths part");
+    for (std::size_t i = 0; i < at->x.size(); ++i) p.reference.emplace_back(at->x[i].toDouble(), at->y[i].toDouble());
+    p.oursOff = largestDistance(p.ours, p.reference);
+    p.theirsOff = largestDistance(p.theirs, p.reference);
+    p.agreesWith = p.oursOff <= p.theirsOff ? "ours" : "theirs";
+  }
 }
 
 }  // namespace
@@ -171,39 +241,37 @@ CrosscheckReport crosscheck(const CrosscheckOptions& options) {
   const double end = options.request.duration;
   double longestWindow = 0;
   for (double dt : options.steps) longestWindow = std::max(longestWindow, matchWindow(dt));
+  const RunRecord ours = runOurSide(options.request, longestWindow, report);
   RunRequest longer = options.request;
   longer.duration = end + longestWindow;
-  std::uint64_t eventsLonger = 0;
-  const RunRecord ours = runOurs(longer, eventsLonger);
-  report.ourCollisions = std::count_if(ours.collisions.begin(), ours.collisions.end(),
-                                       [&](const CollisionRecord& c) { return c.time <= end; });
-  report.energyStart = ours.samples.front().energy;
-  for (const TrajectorySample& s : ours.samples)
-    if (s.time <= end) report.ourEnergyEnd = s.energy;
-  {
-    const auto start = std::chrono::steady_clock::now();
-    report.ourEvents = simulate<double>(options.request).total;
-    report.ourWallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
   for (double dt : options.steps) {
     Box2dOptions b = options.box2d;
     b.dt = dt;
     RunRecord theirs = runBox2d(longer, b);
-    StepComparison c;
-    c.dt = dt;
-    c.end = end;
-    c.matchWindow = matchWindow(dt);
+    StepComparison c = compareRun(ours, theirs, dt, end, true);
     c.steps = static_cast<std::uint64_t>(std::ceil(end / dt - 1e-9));
-    c.box2dCollisions = std::count_if(theirs.collisions.begin(), theirs.collisions.end(),
-                                      [&](const CollisionRecord& r) { return r.time <= end; });
     c.speedCappedSteps = theirs.speedCappedSteps;
     c.rotationCappedSteps = theirs.rotationCappedSteps;
-    c.wallSeconds = theirs.wallSeconds;
-    compareCollisions(ours, theirs, c);
-    compareTrajectories(ours, theirs, c);
     if (options.keepBox2dSamples) c.box2dSamples = std::move(theirs.samples);
     report.steps.push_back(std::move(c));
   }
+  checkPartings(options.request, report.steps);
+  return report;
+}
+
+CrosscheckReport crosscheckRuns(const RunRequest& request, const std::vector<EngineRun>& runs) {
+  CrosscheckReport report;
+  const double end = request.duration;
+  double longestWindow = 0;
+  for (const EngineRun& r : runs) longestWindow = std::max(longestWindow, matchWindow(r.dt));
+  const RunRecord ours = runOurSide(request, longestWindow, report);
+  for (const EngineRun& r : runs) {
+    StepComparison c = compareRun(ours, r.record, r.dt, end, r.withCollisions);
+    c.steps = static_cast<std::uint64_t>(std::count_if(r.record.samples.begin(), r.record.samples.end(),
+                                                       [&](const TrajectorySample& s) { return s.time > 0 && s.time <= end; }));
+    report.steps.push_back(std::move(c));
+  }
+  checkPartings(request, report.steps);
   return report;
 }
 

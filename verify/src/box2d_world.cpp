@@ -42,6 +42,7 @@ class Box2dBridge final : public b2ContactListener {
         access_(shadow_->params(), [this](GizmoId id) -> Ball<double>& { return shadow_->ballById(id); }),
         world_(b2Vec2(0, static_cast<float>(request.board.gravity))) {
     world_.SetAllowSleeping(false);  // a Gizmoball never sleeps
+    world_.SetContinuousPhysics(options.continuous);
     world_.SetContactListener(this);
     addBody(box2dOuterWalls());
     for (const GizmoSpec& g : request.board.gizmos) {

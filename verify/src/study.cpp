@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 
+#include "gizmo/verify/box2d3_run.hpp"
 #include "gizmo/verify/box2d_crosscheck.hpp"
 #include "gizmo/verify/study_suite.hpp"
 #include "study_compare.hpp"
@@ -87,7 +88,8 @@ class SceneRunner {
     std::sort(ticks.begin(), ticks.end());
     for (double h : ticks) runOurGroup(MotionModel::Classic, h);
     for (double dt : plan_.box2dSteps)
-      for (bool bullet : {true, false}) runBox2dMethod(dt, bullet);
+      for (bool v3 : {false, true})
+        for (bool bullet : {true, false}) runBox2dMethod(dt, bullet, v3);
     std::vector<MethodResult> ordered;
     for (const StudyMethod& m : plan_.methods()) ordered.push_back(results_.at(m.label()));
     return ordered;
@@ -159,8 +161,12 @@ class SceneRunner {
       r.convergenceError = largestPositionDistance(*classicFinest_, samples);
   }
 
-  void runBox2dMethod(double dt, bool bullet) {
-    const StudyMethod method{bullet ? MethodFamily::Box2d : MethodFamily::Box2dNoBullet, PrecisionChoice{}, dt};
+  // Box2D 2.4 in process, or v3 by the node program (a board it cannot run, or a machine without
+  // node or the package, leaves the method stopped, saying why).
+  void runBox2dMethod(double dt, bool bullet, bool v3) {
+    const MethodFamily family = v3 ? (bullet ? MethodFamily::Box2dV3 : MethodFamily::Box2dV3NoBullet)
+                                   : (bullet ? MethodFamily::Box2d : MethodFamily::Box2dNoBullet);
+    const StudyMethod method{family, PrecisionChoice{}, dt};
     if (progress_) progress_(scene_.name, method.label());
     MethodResult& r = results_[method.label()];
     r.scene = scene_.name;
@@ -168,11 +174,17 @@ class SceneRunner {
     Box2dOptions options;
     options.dt = dt;
     options.bullet = bullet;
+    if (v3) {
+      if (std::optional<std::string> why = box2d3CannotModel(scene_.request.board)) r.stopped = *why;
+      else if (std::optional<std::string> missing = box2d3Unavailable()) r.stopped = "not run: " + *missing;
+      if (!r.stopped.empty()) return;
+    }
     std::vector<double> seconds;
     RunRecord first;
     try {
       for (int k = 0; k < plan_.repeats; ++k) {
-        RunRecord record = runBox2d(scene_.request, options);
+        RunRecord record =
+            v3 ? runBox2d3(scene_.request, options, scene_.request.duration).run.record : runBox2d(scene_.request, options);
         seconds.push_back(record.wallSeconds);
         if (k == 0) first = std::move(record);
         else if (record.collisions.size() != first.collisions.size() && r.stopped.empty())
@@ -184,7 +196,7 @@ class SceneRunner {
     }
     r.events = first.steps;
     setCost(r, seconds, scene_.request.duration);
-    const StudyRun run = studyRunOf(first, dt, instants_, scene_.request.board.balls.size());
+    const StudyRun run = studyRunOf(first, instants_, scene_.request.board.balls.size());
     setErrors(r, compareWithReference(reference_, run, scene_.request.duration, matchWindow(dt)),
               reference_.collisions.size(), run.collisions.size());
   }
@@ -206,8 +218,18 @@ const char* familyName(MethodFamily family) {
     case MethodFamily::Classic: return "classic";
     case MethodFamily::Box2d: return "box2d";
     case MethodFamily::Box2dNoBullet: return "box2d-no-bullet";
+    case MethodFamily::Box2dV3: return "box2d-v3";
+    case MethodFamily::Box2dV3NoBullet: return "box2d-v3-no-bullet";
   }
   return "?";
+}
+
+bool isBox2dFamily(MethodFamily family) {
+  return family == MethodFamily::Box2d || family == MethodFamily::Box2dNoBullet || isBox2dV3Family(family);
+}
+
+bool isBox2dV3Family(MethodFamily family) {
+  return family == MethodFamily::Box2dV3 || family == MethodFamily::Box2dV3NoBullet;
 }
 
 std::string StudyMethod::label() const {
@@ -215,7 +237,9 @@ std::string StudyMethod::label() const {
     case MethodFamily::Ballistic: return "ballistic " + precisionName(precision);
     case MethodFamily::Classic: return "classic h=" + formatTick(tick) + " " + precisionName(precision);
     case MethodFamily::Box2d:
-    case MethodFamily::Box2dNoBullet: {
+    case MethodFamily::Box2dNoBullet:
+    case MethodFamily::Box2dV3:
+    case MethodFamily::Box2dV3NoBullet: {
       // Step sizes are 1/N of a second: say so, as Box2D's users do.
       const double n = 1 / tick;
       const std::string step = std::fabs(n - std::round(n)) < 1e-9 ? "1/" + formatTick(std::round(n)) : formatTick(tick);
@@ -250,10 +274,9 @@ std::vector<StudyMethod> StudyPlan::methods() const {
   for (const PrecisionChoice& p : precisions) out.push_back(StudyMethod{MethodFamily::Ballistic, p, ballisticTick});
   for (double h : classicTicks)
     for (const PrecisionChoice& p : precisions) out.push_back(StudyMethod{MethodFamily::Classic, p, h});
-  for (double dt : box2dSteps) {
-    out.push_back(StudyMethod{MethodFamily::Box2d, PrecisionChoice{}, dt});
-    out.push_back(StudyMethod{MethodFamily::Box2dNoBullet, PrecisionChoice{}, dt});
-  }
+  for (double dt : box2dSteps)
+    for (MethodFamily f : {MethodFamily::Box2d, MethodFamily::Box2dNoBullet, MethodFamily::Box2dV3, MethodFamily::Box2dV3NoBullet})
+      out.push_back(StudyMethod{f, PrecisionChoice{}, dt});
   return out;
 }
 

@@ -47,12 +47,12 @@ StudyRun studyRunOf(const Trace& trace, std::vector<TraceSample> samples, const 
   return run;
 }
 
-StudyRun studyRunOf(const RunRecord& record, double dt, const std::vector<double>& instants, std::size_t balls) {
+StudyRun studyRunOf(const RunRecord& record, const std::vector<double>& instants, std::size_t balls) {
   StudyRun run;
   run.collisions = record.collisions;
   for (const CollisionRecord& c : record.collisions) run.collisionTimes.push_back(WideValue::of(c.time));
   for (double t : instants) {
-    const TrajectorySample s = interpolate(record.samples, dt, t);
+    const TrajectorySample s = interpolate(record.samples, t);
     TraceSample sample;
     sample.time = t;
     for (std::size_t i = 0; i < balls; ++i) {

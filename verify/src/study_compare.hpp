@@ -20,7 +20,7 @@ struct StudyRun {
 // Our run from its trace: every collision (an absorber's capture included) named as Box2D's are.
 StudyRun studyRunOf(const Trace& trace, std::vector<TraceSample> samples, const BoardSpec& board);
 // Box2D's run: its samples interpolated at the instants (its steps need not fall on them).
-StudyRun studyRunOf(const RunRecord& record, double dt, const std::vector<double>& instants, std::size_t balls);
+StudyRun studyRunOf(const RunRecord& record, const std::vector<double>& instants, std::size_t balls);
 
 struct RunErrors {
   double positionError = 0, positionErrorMedian = 0;

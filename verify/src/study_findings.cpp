@@ -6,7 +6,9 @@
 namespace gizmo::verify {
 namespace {
 
-bool isBox2d(MethodFamily f) { return f == MethodFamily::Box2d || f == MethodFamily::Box2dNoBullet; }
+// The comparison with Box2D is with 2.4, the engine linked in (its cost is Box2D's own, where v3's
+// includes WebAssembly and node).
+bool isBox2d24(MethodFamily f) { return f == MethodFamily::Box2d || f == MethodFamily::Box2dNoBullet; }
 
 bool isDouble(const PrecisionChoice& p) { return p.kind == Precision::Double; }
 
@@ -62,7 +64,7 @@ std::optional<Box2dComparison> compareBallisticDoubleWithBox2d(const SceneReport
   for (const MethodResult& r : scene.results) {
     if (!r.stopped.empty()) continue;
     if (r.method.family == MethodFamily::Ballistic && isDouble(r.method.precision)) ours = &r;
-    if (isBox2d(r.method.family)) box2d.push_back(&r);
+    if (isBox2d24(r.method.family)) box2d.push_back(&r);
   }
   if (ours == nullptr || box2d.empty()) return std::nullopt;
   Box2dComparison c;

@@ -43,7 +43,8 @@ std::string planText(const StudyReport& report) {
     if (m.family == MethodFamily::Box2d) steps += (steps.empty() ? "" : ", ") + m.label().substr(m.label().find('=') + 1);
   return std::string(p.quick ? "Quick study" : "Full study") + ": " + std::to_string(report.scenes.size()) +
          " scenes; the ballistic model and the classic model at maximum ticks " + ticks + " s, each at " + precisions +
-         "; Box2D " + report.box2dVersion + " at steps " + steps + " s with and without bullets; each run timed " +
+         "; Box2D " + report.box2dVersion + " and Box2D v3 (box2d3-wasm, under node) at steps " + steps +
+         " s with and without bullets; each run timed " +
          std::to_string(p.repeats) + " times. Reference: the ballistic model at mpfr:256.";
 }
 
@@ -101,8 +102,8 @@ std::string readingText(const StudyReport& report) {
 
 std::string stabilityTable(const StudyReport& report) {
   std::string html = "<table><tr><th class=\"text\">stress scene</th>";
-  const MethodFamily families[] = {MethodFamily::Ballistic, MethodFamily::Classic, MethodFamily::Box2d,
-                                   MethodFamily::Box2dNoBullet};
+  const MethodFamily families[] = {MethodFamily::Ballistic, MethodFamily::Classic,       MethodFamily::Box2d,
+                                   MethodFamily::Box2dNoBullet, MethodFamily::Box2dV3, MethodFamily::Box2dV3NoBullet};
   for (MethodFamily f : families)
     html += std::string("<th class=\"text\">") + familyName(f) + (f == MethodFamily::Classic ? " (double)" : "") + "</th>";
   html += "<th class=\"text\">what the coarsest failing method gets wrong</th></tr>\n";

@@ -46,7 +46,7 @@ std::string studyCsv(const StudyReport& report) {
     const std::vector<ChartPoint> front = paretoFront(chartPoints(s));
     for (std::size_t i = 0; i < s.results.size(); ++i) {
       const MethodResult& r = s.results[i];
-      const bool box2d = r.method.family == MethodFamily::Box2d || r.method.family == MethodFamily::Box2dNoBullet;
+      const bool box2d = isBox2dFamily(r.method.family);
       out << field(s.scene.name) << ',' << (s.scene.stress ? 1 : 0) << ',' << field(r.method.label()) << ','
           << familyName(r.method.family) << ',' << (box2d ? "" : precisionName(r.method.precision)) << ','
           << number(r.method.tick) << ',' << (r.reference ? 1 : 0) << ',' << field(r.stopped) << ','
@@ -105,7 +105,8 @@ std::string studyJson(const StudyReport& report) {
     }
     nlohmann::ordered_json fails = nlohmann::ordered_json::object();
     if (s.scene.stress)
-      for (MethodFamily f : {MethodFamily::Ballistic, MethodFamily::Classic, MethodFamily::Box2d, MethodFamily::Box2dNoBullet})
+      for (MethodFamily f : {MethodFamily::Ballistic, MethodFamily::Classic, MethodFamily::Box2d, MethodFamily::Box2dNoBullet,
+                             MethodFamily::Box2dV3, MethodFamily::Box2dV3NoBullet})
         fails[familyName(f)] = failsFrom(s, f);
     scenes.push_back({{"name", s.scene.name},
                       {"board", s.scene.board},

@@ -18,7 +18,9 @@ set title "error against cost: ".scene noenhanced
 family(name) = strcol(1) eq name ? $4 : NaN
 plot datafile using 3:(family("ballistic")) with points pt 7 ps 1.1 lc rgb "#1f77b4" title "ballistic (precisions)", \
      datafile using 3:(family("classic")) with points pt 9 ps 1.0 lc rgb "#2ca02c" title "classic (ticks x precisions)", \
-     datafile using 3:(family("box2d")) with points pt 5 ps 1.0 lc rgb "#d62728" title "Box2D, bullets", \
-     datafile using 3:(family("box2d-no-bullet")) with points pt 4 ps 1.0 lc rgb "#ff7f0e" title "Box2D, no bullets", \
+     datafile using 3:(family("box2d")) with points pt 5 ps 1.0 lc rgb "#d62728" title "Box2D 2.4, bullets", \
+     datafile using 3:(family("box2d-no-bullet")) with points pt 4 ps 1.0 lc rgb "#ff7f0e" title "Box2D 2.4, no bullets", \
+     datafile using 3:(family("box2d-v3")) with points pt 13 ps 1.0 lc rgb "#9467bd" title "Box2D v3, bullets", \
+     datafile using 3:(family("box2d-v3-no-bullet")) with points pt 12 ps 1.0 lc rgb "#8c564b" title "Box2D v3, no bullets", \
      frontfile using 3:4 with lines lw 1.5 dt 2 lc rgb "black" title "Pareto front", \
      frontfile using 3:4:2 with labels left offset 0.8,0.4 font ",8" noenhanced notitle

@@ -43,6 +43,7 @@ struct RunRecord {
 struct Box2dOptions {
   double dt = 1.0 / 60;
   bool bullet = true;                // the balls are bullets (continuous collision with each other)
+  bool continuous = true;            // continuous collision against static and kinematic bodies
   double restitutionThreshold = 0;   // Box2D's default is 1 m/s: slower hits do not bounce
   int velocityIterations = 8;        // Box2D's recommended values
   int positionIterations = 3;

@@ -25,15 +25,18 @@ struct StudyScene {
   std::string note;         // what the scene is for, in a few words
 };
 
-enum class MethodFamily { Ballistic, Classic, Box2d, Box2dNoBullet };
+// Box2d: Box2D 2.4, linked in; Box2dV3: Box2D v3, run by the node program (box2d3_run.hpp).
+enum class MethodFamily { Ballistic, Classic, Box2d, Box2dNoBullet, Box2dV3, Box2dV3NoBullet };
 const char* familyName(MethodFamily family);
+bool isBox2dFamily(MethodFamily family);  // either engine, bullets or not
+bool isBox2dV3Family(MethodFamily family);
 
 // One way to simulate a scene.
 struct StudyMethod {
   MethodFamily family = MethodFamily::Ballistic;
   PrecisionChoice precision;  // ours only
   double tick = 0.05;         // the maximum tick length (ours), or the step size (Box2D)
-  std::string label() const;  // e.g. "classic h=0.005 double", "box2d dt=1/240 no-bullet"
+  std::string label() const;  // e.g. "classic h=0.005 double", "box2d-no-bullet dt=1/240", "box2d-v3 dt=1/60"
 };
 
 // What a study runs: the methods, and how often each run is timed.

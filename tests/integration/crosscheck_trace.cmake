@@ -1,0 +1,56 @@
+# `gizmo crosscheck --trace` on a naive engine's run, end to end (docs/verification.md, "Any
+# engine's run"):
+#   cmake -DGIZMO=exe -DENGINE=plain_steps_engine -DWORK=dir -DBOARD=thin-wall.txt -P crosscheck_trace.cmake
+# At steps of 1/60 s the engine moves the ball through the square: the report names our hit on
+# the square as the first the engine missed, the paths part, and the mpfr:256 run agrees with us
+# there. At 1/600 s it meets the square where a step ends, up to one step late: every hit matched.
+cmake_minimum_required(VERSION 3.25)
+include(${CMAKE_CURRENT_LIST_DIR}/gizmo_cli.cmake)
+foreach(required GIZMO ENGINE WORK BOARD)
+  if(NOT DEFINED ${required})
+    message(FATAL_ERROR "crosscheck_trace.cmake needs -D${required}=…")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+
+# The engine's run of BOARD at step dt for 0.6 s, as ${WORK}/NAME.jsonl.
+function(engine_trace name dt)
+  execute_process(COMMAND ${ENGINE} ${BOARD} ${dt} 0.6 OUTPUT_FILE ${WORK}/${name}.jsonl RESULT_VARIABLE code)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "plain_steps_engine ${BOARD} ${dt} 0.6 exited with ${code}")
+  endif()
+endfunction()
+
+engine_trace(coarse 0.016666666666666666)
+gizmo_run(RUN crosscheck ${BOARD} --time 0.5 --trace ${WORK}/coarse.jsonl)
+if(NOT RUN_EXIT EQUAL 0)
+  gizmo_fail("the cross-check of the coarse trace should succeed")
+endif()
+if(NOT RUN_STDOUT MATCHES "engine +plain steps of 0\\.0166667 s, from the trace [^\n]*coarse\\.jsonl [(]contacts reported[)]")
+  gizmo_fail("the report should name the trace's engine")
+endif()
+if(NOT RUN_STDOUT MATCHES "first unmatched: our hit of B on S at t = 0\\.051 s")
+  gizmo_fail("the engine's tunnelling through S should be the first unmatched hit")
+endif()
+if(NOT RUN_STDOUT MATCHES "paths part at t = 0\\.1 s: mpfr:256 agrees with us")
+  gizmo_fail("the paths should part, with the mpfr:256 run on our side")
+endif()
+
+engine_trace(fine 0.0016666666666666668)
+gizmo_run(RUN crosscheck ${BOARD} --time 0.5 --trace ${WORK}/fine.jsonl --json)
+if(NOT RUN_EXIT EQUAL 0)
+  gizmo_fail("the cross-check of the fine trace should succeed")
+endif()
+foreach(key missed_by_engine missed_by_us)
+  string(JSON missed GET "${RUN_STDOUT}" steps 0 ${key})
+  if(NOT missed EQUAL 0)
+    gizmo_fail("at 1/600 s the engine meets the square: ${key} should be 0")
+  endif()
+endforeach()
+string(JSON matched GET "${RUN_STDOUT}" steps 0 matched)
+string(JSON ours GET "${RUN_STDOUT}" ours collisions)
+string(JSON late GET "${RUN_STDOUT}" steps 0 max_time_error)
+if(NOT matched EQUAL ours OR matched LESS 2 OR late GREATER 0.0016666666666666668)
+  gizmo_fail("at 1/600 s all ${ours} hits should match, each at most one step late (${matched} matched, ${late} s)")
+endif()

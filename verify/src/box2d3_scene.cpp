@@ -1,0 +1,80 @@
+// The scene that verify/box2d3/run_scene.mjs builds in Box2D v3: the bodies of the one mapping
+// (box2d_mapping.cpp) written out as they are, so that no second copy of it exists.
+#include <nlohmann/json.hpp>
+
+#include "gizmo/core/board/physics_params.hpp"
+#include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/verify/box2d3_run.hpp"
+#include "gizmo/verify/box2d_mapping.hpp"
+
+namespace gizmo::verify {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json point(const Vec2<double>& p) { return Json::array({p.x, p.y}); }
+
+Json partJson(const Box2dPart& part) {
+  Json points = Json::array();
+  for (const Vec2<double>& p : part.points) points.push_back(point(p));
+  switch (part.kind) {
+    case Box2dPart::Kind::Polygon:
+      return {{"kind", "polygon"}, {"points", points}, {"radius", part.radius}};
+    case Box2dPart::Kind::Edge:
+      return {{"kind", "edge"}, {"points", points}, {"radius", part.radius}};
+    case Box2dPart::Kind::Circle:
+      break;
+  }
+  return {{"kind", "circle"}, {"centre", point(part.centre)}, {"radius", part.radius}};
+}
+
+Json bodyJson(const Box2dBody& body) {
+  Json parts = Json::array();
+  for (const Box2dPart& part : body.parts) parts.push_back(partJson(part));
+  return {{"name", body.name},          {"kinematic", body.kinematic}, {"sensor", body.sensor},
+          {"restitution", body.restitution}, {"origin", point(body.origin)}, {"angle", body.angle},
+          {"parts", parts}};
+}
+
+}  // namespace
+
+std::optional<std::string> box2d3CannotModel(const BoardSpec& board) {
+  if (std::optional<std::string> why = box2dCannotModel(board)) return why;
+  for (const GizmoSpec& g : board.gizmos) {
+    const Box2dBody body = box2dBodyOf(g);
+    const std::string gizmo = std::string(gizmoTypeWord(g.type)) + " '" + g.name + "'";
+    if (body.kinematic)
+      return "the Box2D v3 cross-check does not model the " + gizmo + " yet (it would turn on the core's schedule each step)";
+    if (body.sensor)
+      return "the Box2D v3 cross-check does not model the " + gizmo + " yet (the core's capture would act each step)";
+    if (body.restitution != 1)
+      return "the Box2D v3 cross-check cannot model the " + gizmo + ": v3 takes the larger of two coefficients of "
+             "reflection, and a ball's is 1";
+  }
+  return std::nullopt;
+}
+
+std::string box2d3Scene(const RunRequest& request, const Box2dOptions& options) {
+  Json bodies = Json::array({bodyJson(box2dOuterWalls())});
+  for (const GizmoSpec& g : request.board.gizmos) bodies.push_back(bodyJson(box2dBodyOf(g)));
+  Json balls = Json::array();
+  for (const BallSpec& b : request.board.balls)
+    balls.push_back({{"name", b.name}, {"x", b.x}, {"y", b.y}, {"vx", b.vx}, {"vy", b.vy}, {"radius", kBallRadius}});
+  const Json scene{{"format", "gizmo-box2d-scene"},
+                   {"version", 1},
+                   {"gravity", request.board.gravity},
+                   {"mu", request.board.mu},
+                   {"mu2", request.board.mu2},
+                   {"rest_speed", PhysicsParams<double>{}.restSpeed},
+                   {"dt", options.dt},
+                   {"duration", request.duration},
+                   {"sub_steps", kBox2d3SubSteps},
+                   {"bullets", options.bullet},
+                   {"continuous", options.continuous},
+                   {"restitution_threshold", options.restitutionThreshold},
+                   {"bodies", bodies},
+                   {"balls", balls}};
+  return scene.dump();
+}
+
+}  // namespace gizmo::verify
