@@ -8,6 +8,7 @@
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/verify/certify.hpp"
 #include "gizmo/verify/certify_ladder.hpp"
+#include "support/event_at.hpp"
 
 namespace gizmo::test {
 
@@ -48,17 +49,6 @@ struct HandBoard {
     snapshot.balls = {s};
   }
 };
-
-inline Event<double> eventAt(double time, EventKind kind, GizmoId a = kNoGizmo, GizmoId b = kNoGizmo,
-                             std::int32_t feature = -1) {
-  Event<double> e;
-  e.time = time;
-  e.kind = kind;
-  e.a = a;
-  e.b = b;
-  e.feature = feature;
-  return e;
-}
 
 // The ladder's verdict on running `executed` with `next` the earliest scheduled event left.
 inline detail::LadderResult settle(const HandBoard& board, const Event<double>& executed, const Event<double>& next) {

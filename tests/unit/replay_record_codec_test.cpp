@@ -5,19 +5,10 @@
 #include <vector>
 
 #include "gizmo/replay/record_codec.hpp"
+#include "support/event_at.hpp"
 
 namespace gizmo::replay {
 namespace {
-
-Event<double> event(EventKind kind, double time, GizmoId a, GizmoId b, std::uint64_t sequence) {
-  Event<double> e;
-  e.kind = kind;
-  e.time = time;
-  e.a = a;
-  e.b = b;
-  e.sequence = sequence;
-  return e;
-}
 
 std::vector<Decision<double>> decodeAll(const ByteWriter& written, const PhysicsParams<double>& params) {
   ByteReader in(written.bytes());
@@ -37,8 +28,8 @@ TEST(RecordCodec, RulesOfAnEarlierInstantBeforeAFrictionTickAreWrittenAndItsRule
   ByteWriter written;
   RecordEncoder<double> encoder(written, params);
   encoder.reset(0, 0);
-  const Event<double> friction = event(EventKind::FrictionTick, 0.01, 1, kNoGizmo, 0);
-  const Event<double> hit = event(EventKind::Collision, 0.005, 2, 3, 1);
+  const Event<double> friction = test::eventAt(0.01, EventKind::FrictionTick, 1, kNoGizmo, -1, 0);
+  const Event<double> hit = test::eventAt(0.005, EventKind::Collision, 2, 3, 0, 1);
   encoder.scheduled(friction);
   encoder.scheduled(hit);
   encoder.executed(hit, EventOutcome<double>{});
