@@ -6,8 +6,10 @@
 #include <cmath>
 #include <limits>
 
+#include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "support/board_builder.hpp"
+#include "support/stub_board.hpp"
 
 namespace gizmo {
 namespace {
@@ -291,7 +293,42 @@ TEST(Absorber, AFiredBallTakenAwayBeforeItLeftIsOut) {
     board->scheduleInput(0.2, 32, KeyDirection::Down);
     board->tick(0.05);
     EXPECT_FALSE(b2.captured()) << motionModelName(model) << ": B2 was not fired";
+    // Far away, it is never near enough for a prediction with the absorber: no Leave either.
     EXPECT_TRUE(rec.ofKind(EventKind::Leave).empty()) << motionModelName(model);
+  }
+}
+
+// A ball it fired that lies on a side's line, to within kFiredSlack, is leaving when it moves out
+// and coming in when it moves in: captured then, whether a hit turned it back at the instant it
+// would have left or it went without crossing a side and comes back. Counted as still inside, a
+// ball teleported away and back down onto the top, 1.6e-14 L above it at a recalculation of the
+// ballistic run, passed into the absorber uncaptured; the classic run caught it (models-agree,
+// campaign seed 1796537443, case 806). The absorber spans x 10..18, y 8..10: a centre on the top's
+// line lies at y = 7.75.
+TEST(Absorber, AFiredBallOnASidesLineMovingInIsCaptured) {
+  for (const double offset : {-1.6e-14, 0.0, 1.6e-14}) {  // just outside, on, just inside the line
+    test::StubBoard board({{"B", {0, 0}, {0, 0}}}, 0);
+    Ball<double>& ball = board.balls[0];
+    Absorber<double> absorber(gizmoAt(GizmoType::Absorber, "A", 10, 8, 0, 8, 2));
+    absorber.setId(1);
+    absorber.holdAtStart(ball, 0);
+    absorber.fireTrigger(board);
+    ASSERT_EQ(absorber.firedStillInside(), std::vector<GizmoId>{ball.id()});
+    board.setNow(1.0);
+    // Moving out across the top: leaving, at once.
+    ball.setState(1.0, {17.25, 7.75 + offset}, {0, -50}, board.params());
+    const std::optional<Contact<double>> out = absorber.timeUntilCollision(ball, 1.0, 2.0, board.params());
+    ASSERT_TRUE(out.has_value()) << offset;
+    EXPECT_EQ(out->kind, EventKind::Leave) << offset;
+    EXPECT_LE(out->time - 1.0, 1e-15) << offset;
+    // Moving in across it: coming in, and captured at once.
+    ball.setState(1.0, {17.25, 7.75 + offset}, {0, 50}, board.params());
+    const std::optional<Contact<double>> in = absorber.timeUntilCollision(ball, 1.0, 2.0, board.params());
+    ASSERT_TRUE(in.has_value()) << offset;
+    EXPECT_EQ(in->kind, EventKind::Collision) << offset;
+    EXPECT_LE(in->time - 1.0, 1e-15) << offset;
+    absorber.collide(ball, *in, board);
+    EXPECT_TRUE(ball.captured()) << offset;
   }
 }
 

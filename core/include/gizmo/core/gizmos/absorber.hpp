@@ -2,6 +2,7 @@
 // The absorber (docs/physics.md §2): a rectangle that captures balls instead of reflecting
 // them, holds them at its lower-right corner, and fires the first one it captured when triggered.
 #include <algorithm>
+#include <array>
 #include <deque>
 
 #include "gizmo/core/gizmos/polygonal_gizmo.hpp"
@@ -91,22 +92,34 @@ class Absorber final : public GridBumper<Real> {
 
  private:
   // Whether a ball is one it fired that has not left: in its list, free, and with its centre
-  // within the rectangle grown by the ball's radius (leaveTime's) and kFiredSlack. A fired ball can
-  // go without a Leave event: a teleporter at the absorber's edge moves it elsewhere, a sink or
-  // another absorber takes it. It is then out, and meets this absorber as any ball does: it is
-  // captured if it comes back. Kept in the list, it would stop the absorber firing for as long as
-  // it stayed away, and its "leave" would be found where its path crosses a side's line far from
-  // the rectangle, by whichever prediction happened to look that far. The slack: a ball that a hit
-  // turns back on the side's line, at the instant it would have left, stays inside, though
-  // rounding may put its centre an ulp beyond the line (and a run in the other motion model not).
+  // within the rectangle grown by the ball's radius (leaveTime's) and kFiredSlack, unless it lies
+  // within kFiredSlack of a side's line moving in across it. A fired ball can go without crossing
+  // a side: a teleporter at the absorber's edge moves it elsewhere, a sink or another absorber
+  // takes it. It is then out, and meets this absorber as any ball does: it is captured if it comes
+  // back. Counted inside, it would stop the absorber firing for as long as it stayed away, and its
+  // "leave" would be found where its path crosses a side's line far from the rectangle, by
+  // whichever prediction happened to look that far. The slack: rounding may put a ball on a side's
+  // line an ulp either side of it, and one motion model's run not the other's. On the line, a
+  // ball moving out is leaving (its Leave comes at once), and one moving in is coming in: one that
+  // a hit turns back at the instant it would have left, or one that went without crossing a side
+  // and comes back. Counted inside, the second passed into the absorber uncaptured when a
+  // prediction met it 1.6e-14 L above the top (campaign seed 1796537443, case 806).
   bool firedAndInside(const Ball<Real>& ball, const Real& now) const {
     if (ball.captured() || std::find(firedInside_.begin(), firedInside_.end(), ball.id()) == firedInside_.end())
       return false;
     const GizmoSpec s = this->spec();
-    const Real r = Ball<Real>::radius() + fromDouble<Real>(kFiredSlack);
-    const Vec2<Real> p = ball.positionAt(now);
-    return Real(s.x) - r <= p.x && p.x <= Real(s.x + s.width) + r && Real(s.y) - r <= p.y &&
-           p.y <= Real(s.y + s.height) + r;
+    const Real r = Ball<Real>::radius(), slack = fromDouble<Real>(kFiredSlack);
+    const Trajectory<Real> t = ball.trajectoryAt(now);
+    // Each grown side: how far the centre lies inside its line, and its speed inwards across it.
+    const std::array<std::array<Real, 2>, 4> sides{{
+        {t.p.x - (Real(s.x) - r), t.v.x},
+        {Real(s.x + s.width) + r - t.p.x, -t.v.x},
+        {t.p.y - (Real(s.y) - r), t.v.y},
+        {Real(s.y + s.height) + r - t.p.y, -t.v.y},
+    }};
+    for (const auto& [inside, inwards] : sides)
+      if (inside < -slack || (!(slack < inside) && Real(0) < inwards)) return false;
+    return true;
   }
 
   // When a ball it fired stops overlapping the rectangle. The rectangle grown by the ball's
