@@ -66,7 +66,9 @@ class TraceReader {
             std::initializer_list<const char*> optional) const {
     for (const char* k : required)
       if (!object.contains(k)) fail(line_, what + " has no \"" + k + "\"");
-    for (const auto& [k, v] : object.items()) {
+    // Over the keys alone: a lambda may not capture a structured binding before clang 16.
+    for (const auto& item : object.items()) {
+      const std::string& k = item.key();
       const auto is = [&](const char* name) { return k == name; };
       if (std::none_of(required.begin(), required.end(), is) && std::none_of(optional.begin(), optional.end(), is))
         fail(line_, what + " has an unknown key \"" + k + "\"");
