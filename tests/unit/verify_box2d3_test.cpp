@@ -7,9 +7,13 @@
 // and is skipped, except in CI (CI=true), where their absence is a failure.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -158,6 +162,48 @@ TEST(Box2d3Runs, SlowBouncesAreLost) {
   EXPECT_LT(2 * fine.theirCollisions, 35u);
   EXPECT_GT(fine.theirCollisions, coarse.theirCollisions);
   EXPECT_GT(coarse.missedByThem, 0u);
+}
+
+// A stand-in for the node program in a folder of its own (GIZMO_BOX2D3_DIR), with the package's
+// marker file: what it says, or that it ends early, is reported naming the program.
+class FakeProgram {
+ public:
+  explicit FakeProgram(const std::string& script)
+      : dir_(std::filesystem::temp_directory_path() / ("gizmo-fake-box2d3-" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(dir_ / "node_modules" / "box2d3-wasm");
+    std::ofstream(dir_ / "node_modules" / "box2d3-wasm" / "package.json") << "{}\n";
+    std::ofstream(dir_ / "run_scene.mjs") << script;
+    ::setenv("GIZMO_BOX2D3_DIR", dir_.c_str(), 1);
+  }
+  ~FakeProgram() {
+    ::unsetenv("GIZMO_BOX2D3_DIR");
+    std::error_code ignored;
+    std::filesystem::remove_all(dir_, ignored);
+  }
+
+ private:
+  std::filesystem::path dir_;
+};
+
+std::string failureOf(const std::string& script) {
+  const FakeProgram fake(script);
+  try {
+    runBox2d3(board("trace/thin-wall.txt", 0.1), Box2dOptions{});
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "no failure";
+}
+
+// The pipe's failures: a program that ends before its first reply (found when it stops reading
+// or when its reply does not come, whichever is first), and one whose reply is not JSON.
+TEST(Box2d3Runs, AProgramThatFailsIsReportedByName) {
+  REQUIRE_BOX2D3();  // node itself
+  const std::string ended = failureOf("process.exit(3);\n");
+  EXPECT_EQ(ended.rfind("the Box2D v3 program (node run_scene.mjs) ", 0), 0u) << ended;
+  EXPECT_NE(ended.find("(exit code 3)"), std::string::npos) << ended;
+  const std::string garbled = failureOf("process.stdout.write('hello\\n');\n");
+  EXPECT_NE(garbled.find("the Box2D v3 program's reply: not JSON"), std::string::npos) << garbled;
 }
 
 constexpr double kSteps[] = {1.0 / 60, 1.0 / 120, 1.0 / 240, 1.0 / 480};

@@ -37,7 +37,7 @@ bool nodeOnPath() {
 class Box2d3Engine final : public SteppedEngine {
  public:
   Box2d3Engine(const RunRequest& request, const Box2dOptions& options)
-      : process_({"node", (programDir() / "run_scene.mjs").string()}),
+      : process_({"node", (programDir() / "run_scene.mjs").string()}, "the Box2D v3 program (node run_scene.mjs)"),
         bodyCount_(1 + request.board.gizmos.size()),
         balls_(request.board.balls.size()) {
     process_.send(box2d3Scene(request, options));

@@ -8,15 +8,16 @@
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 extern char** environ;
 
 namespace gizmo::verify {
 
-LineProcess::LineProcess(const std::vector<std::string>& argv) {
+LineProcess::LineProcess(const std::vector<std::string>& argv, std::string name) : name_(std::move(name)) {
   int ends[2];
   if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
-    throw std::runtime_error(std::string("cannot make a socket for ") + argv.at(0) + ": " + std::strerror(errno));
+    throw std::runtime_error("cannot make a socket for " + name_ + ": " + std::strerror(errno));
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   // The child's end becomes its standard input and output (dup2 leaves them open across exec).
@@ -30,7 +31,7 @@ LineProcess::LineProcess(const std::vector<std::string>& argv) {
   ::close(ends[1]);
   if (error != 0) {
     ::close(ends[0]);
-    throw std::runtime_error("cannot start " + argv[0] + ": " + std::strerror(error));
+    throw std::runtime_error("cannot start " + name_ + ": " + std::strerror(error));
   }
   socket_ = ends[0];
 }
@@ -45,7 +46,7 @@ void LineProcess::send(const std::string& line) {
     // MSG_NOSIGNAL: a program that has gone is an error here, not a SIGPIPE.
     const ssize_t n = ::send(socket_, text.data() + sent, text.size() - sent, MSG_NOSIGNAL);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw std::runtime_error("the program stopped reading (" + howItEnded() + ")");
+    if (n < 0) throw std::runtime_error(name_ + " stopped reading (" + howItEnded() + ")");
     sent += static_cast<std::size_t>(n);
   }
 }
@@ -61,7 +62,7 @@ std::string LineProcess::receive() {
     char chunk[65536];
     const ssize_t n = ::recv(socket_, chunk, sizeof chunk, 0);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw std::runtime_error("the program ended before its reply (" + howItEnded() + ")");
+    if (n <= 0) throw std::runtime_error(name_ + " ended before its reply (" + howItEnded() + ")");
     buffer_.append(chunk, static_cast<std::size_t>(n));
   }
 }

@@ -12,7 +12,8 @@ namespace gizmo::verify {
 class LineProcess {
  public:
   // Starts `argv[0]`, found on the PATH, with those arguments; std::runtime_error when it cannot.
-  explicit LineProcess(const std::vector<std::string>& argv);
+  // `name` names the program in every error.
+  LineProcess(const std::vector<std::string>& argv, std::string name);
   ~LineProcess();
   LineProcess(const LineProcess&) = delete;
   LineProcess& operator=(const LineProcess&) = delete;
@@ -28,6 +29,7 @@ class LineProcess {
  private:
   std::string howItEnded();
 
+  std::string name_;
   int socket_ = -1;
   pid_t pid_ = -1;
   std::string buffer_;  // read and not yet handed back
