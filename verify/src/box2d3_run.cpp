@@ -57,11 +57,8 @@ class Box2d3Engine final : public SteppedEngine {
     return it->second;
   }
 
-  // v3 turns a body by atan(h ω) a sub-step of h (b2IntegrateRotation): the rate that turns it by
-  // `radians` over a step's n sub-steps is n tan(radians / n) / dt.
-  void turn(std::size_t body, double radians) override {
-    turns_.emplace_back(body, radians);
-  }
+  // Sent with the step, once its length is known (step()).
+  void turn(std::size_t body, double radians) override { turns_.emplace_back(body, radians); }
 
   void setVelocity(std::size_t i, const Vec2<double>& v) override {
     balls_.at(i).velocity = v;
@@ -80,6 +77,8 @@ class Box2d3Engine final : public SteppedEngine {
 
   EngineStep step(double t0, double dt) override {
     EngineStep out;
+    // v3 turns a body by atan(h ω) a sub-step of h (b2IntegrateRotation): the rate that turns it
+    // by `radians` over a step's n sub-steps is n tan(radians / n) / dt.
     const double n = kBox2d3SubSteps;
     for (const auto& [body, radians] : turns_) {
       const double omega = n * std::tan(radians / n) / dt;
