@@ -260,8 +260,10 @@ for (let line = nextLine(); line !== null; line = nextLine()) {
     contacts.push(['exit', visitor.ball, 0, sensor.body, ...placed(ball, t0)]);
   }
   sensors.delete();
+  // A held ball has no path in this step: a hit in the step after its release is placed there.
   for (const ball of balls) {
-    ball.previous = { t0, alpha: ball.alpha, from: ball.from, to: ball.to, cut: ball.alpha < 1 - 1e-4, hit: ball.hit === true };
+    ball.previous = ball.held ? null
+      : { t0, alpha: ball.alpha, from: ball.from, to: ball.to, cut: ball.alpha < 1 - 1e-4, hit: ball.hit === true };
     ball.hit = false;
   }
   reply({ ...state, contacts });
