@@ -333,7 +333,7 @@ int box2d3Command(const CheckedRun& run, const CrosscheckCommandOptions& o, cons
     for (double dt : options.steps) {
       verify::Box2dOptions b = options.box2d;
       b.dt = dt;
-      verify::EngineTrace trace = verify::runBox2d3(longer, b, run.request.duration);
+      verify::EngineTrace trace = verify::runBox2d3(longer, b);
       trace.run.dt = dt;
       name = trace.engine;
       runs.push_back(std::move(trace.run));

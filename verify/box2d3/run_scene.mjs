@@ -1,13 +1,17 @@
-// Runs a Gizmoball scene in Box2D v3 (the box2d3-wasm package, pinned in package.json) and writes
-// the run as a trace (docs/verification.md, "Any engine's run") on standard output.
-//   node run_scene.mjs SCENE.json
-// The scene is what `gizmo crosscheck --engine box2d-v3` exports (verify/src/box2d3_scene.cpp):
-// the bodies and shapes of the one mapping of gizmos (verify/src/box2d_mapping.cpp), the balls,
-// gravity, the friction law's constants and the run's settings. This program adds no geometry of
-// its own; it builds what the scene says, steps it, and reports where the balls are after each
-// step and the hits Box2D reports (hit events: contacts that begin faster than the rest speed).
-import { readFileSync } from 'node:fs';
-import { performance } from 'node:perf_hooks';
+// Runs a Gizmoball scene in Box2D v3 (the box2d3-wasm package, pinned in package.json), one step
+// at a time as `gizmo` asks (docs/verification.md, "One driver, two engines").
+//   node run_scene.mjs        (standard input and output: one JSON object a line each way)
+// The first line read is the scene that `gizmo crosscheck --engine box2d-v3` exports
+// (verify/src/box2d3_scene.cpp): the bodies and shapes of the one mapping of gizmos
+// (verify/src/box2d_mapping.cpp), the balls, gravity and the run's settings; the reply says which
+// engine this is and where everything stands. Every further line is a step: the requests made
+// between steps, in order (["v", ball, vx, vy] a ball's velocity, ["turn", body, ω] a
+// kinematic body's angular velocity, ["hold", ball, x, y], ["release", ball, x, y, vx, vy]),
+// then one step of the world; the reply is where the balls and the kinematic bodies stand and the
+// contacts of the step. This program adds no geometry and no Gizmoball rule of its own: the core's
+// rules between steps (keys, triggers, flipper and spinner schedules, absorbers, friction) are
+// applied by gizmo's one driver, which speaks to Box2D 2.4 in process and to this program here.
+import { readFileSync, readSync, writeSync } from 'node:fs';
 
 // The package's files by path: its exports name only the build that picks SIMD and threads.
 const packageDir = new URL('./node_modules/box2d3-wasm/', import.meta.url);
@@ -17,14 +21,33 @@ function fail(message) {
   process.exit(2);
 }
 
-if (process.argv.length !== 3) fail('usage: node run_scene.mjs SCENE.json');
+// Lines of standard input, read as they come (the writer waits for each reply).
+let pending = '';
+const chunk = Buffer.alloc(1 << 16);
+function nextLine() {
+  for (;;) {
+    const end = pending.indexOf('\n');
+    if (end >= 0) {
+      const line = pending.slice(0, end);
+      pending = pending.slice(end + 1);
+      return line;
+    }
+    const n = readSync(0, chunk, 0, chunk.length, null);
+    if (n === 0) return null;
+    pending += chunk.toString('utf8', 0, n);
+  }
+}
+const reply = (object) => writeSync(1, JSON.stringify(object) + '\n');
+
+const first = nextLine();
+if (first === null) fail('no scene on standard input');
 let scene;
 try {
-  scene = JSON.parse(readFileSync(process.argv[2], 'utf8'));
+  scene = JSON.parse(first);
 } catch (e) {
-  fail(`${process.argv[2]}: ${e.message}`);
+  fail(`the scene: ${e.message}`);
 }
-if (scene.format !== 'gizmo-box2d-scene' || scene.version !== 1) fail(`${process.argv[2]}: not a gizmo-box2d-scene of version 1`);
+if (scene.format !== 'gizmo-box2d-scene' || scene.version !== 2) fail('the scene is not a gizmo-box2d-scene of version 2');
 
 // The single-threaded build: the same arithmetic on every machine (the "deluxe" build uses SIMD
 // and threads where the host offers them).
@@ -41,22 +64,29 @@ worldDef.restitutionThreshold = scene.restitution_threshold;
 worldDef.hitEventThreshold = scene.rest_speed;
 const world = b2.b2CreateWorld(worldDef);
 
-// Box2D mixes two shapes' coefficients of restitution by their maximum; a ball's is 1 (two balls
-// bounce elastically), so the scene holds only gizmos whose coefficient is 1 (the exporter refuses
-// the others).
-function shapeDef(restitution, sensor) {
+// Box2D v3 mixes two shapes' coefficients of restitution by their maximum, unless the world has
+// a restitution callback: this one gives a ball and a gizmo the gizmo's coefficient (flippers
+// 0.95, spinners 0.9) and two balls 1, as the core does. A ball's material is marked 1.
+const kBallMaterial = 1;
+b2.b2World_SetRestitutionCallback(world, (restitutionA, materialA, restitutionB) =>
+  materialA == kBallMaterial ? restitutionB : restitutionA);
+
+function shapeDef(restitution, sensor, ball) {
   const def = b2.b2DefaultShapeDef();
   const material = def.material;
   material.friction = 0;  // Box2D's Coulomb friction off: the Gizmoball law is applied each step
   material.restitution = restitution;
+  if (ball) material.userMaterialId = BigInt(kBallMaterial);
   def.material = material;
   def.isSensor = sensor;
+  def.enableSensorEvents = sensor || ball;  // a sensor reports the balls that enter and leave it
   def.enableHitEvents = !sensor;
   return def;
 }
 
-const nameOfShape = new Map();  // a shape's index1: the name of its gizmo or ball
-function addPart(body, def, part, name) {
+// Every shape's owner by its index1: {ball: index} or {body: index}.
+const ownerOfShape = new Map();
+function addPart(body, def, part, owner) {
   let id;
   if (part.kind === 'polygon') {
     id = b2.b2CreatePolygonShape(body, def, b2.b2MakePolygon(b2.b2ComputeHull(part.points.map(vec)), part.radius));
@@ -75,19 +105,21 @@ function addPart(body, def, part, name) {
   } else {
     fail(`unknown part kind '${part.kind}'`);
   }
-  nameOfShape.set(id.index1, name);
+  ownerOfShape.set(id.index1, owner);
 }
 
-for (const body of scene.bodies) {
+const kinematic = [];  // [body index, body id]
+scene.bodies.forEach((body, index) => {
   const def = b2.b2DefaultBodyDef();
   def.type = body.kinematic ? b2.b2BodyType.b2_kinematicBody : b2.b2BodyType.b2_staticBody;
   def.position = vec(body.origin);
   def.rotation = b2.b2MakeRot(body.angle);
   const id = b2.b2CreateBody(world, def);
-  for (const part of body.parts) addPart(id, shapeDef(body.restitution, body.sensor), part, body.name);
-}
+  for (const part of body.parts) addPart(id, shapeDef(body.restitution, body.sensor, false), part, { body: index });
+  if (body.kinematic) kinematic.push([index, id]);
+});
 
-const balls = scene.balls.map((ball) => {
+const balls = scene.balls.map((ball, index) => {
   const def = b2.b2DefaultBodyDef();
   def.type = b2.b2BodyType.b2_dynamicBody;
   def.position = vec([ball.x, ball.y]);
@@ -97,20 +129,58 @@ const balls = scene.balls.map((ball) => {
   locks.angularZ = true;  // fixed rotation
   def.motionLocks = locks;
   const id = b2.b2CreateBody(world, def);
-  addPart(id, shapeDef(1, false), { kind: 'circle', centre: [0, 0], radius: ball.radius }, ball.name);
-  return { name: ball.name, id, from: [0, 0], to: [0, 0], previous: null };
+  addPart(id, shapeDef(1, false, true), { kind: 'circle', centre: [0, 0], radius: ball.radius }, { ball: index });
+  return { name: ball.name, index, id, v: [ball.vx, ball.vy], held: false, muted: false, from: [0, 0], to: [0, 0], previous: null };
 });
-const ballByName = new Map(balls.map((b) => [b.name, b]));
 
-// The Gizmoball friction law (docs/physics.md §4, the core's Ball::frictionApplied), before Box2D
-// adds gravity, as the Box2D 2.4 bridge applies it.
-function frictionApplied([vx, vy], dt) {
-  if (scene.mu === 0 && scene.mu2 === 0) return [vx, vy];
-  let factor = 1 - scene.mu * dt;
-  if (scene.mu2 !== 0) factor -= scene.mu2 * Math.hypot(vx, vy) * dt;
-  if (factor < 0) factor = 0;
-  return [factor * vx, factor * vy];
-}
+// A vector or rotation handed back by the library, read and its handle freed (a run makes millions).
+const read = (handle) => {
+  const xy = [handle.x, handle.y];
+  handle.delete();
+  return xy;
+};
+const angleOf = (id) => {
+  const rotation = b2.b2Body_GetRotation(id);
+  const angle = b2.b2Rot_GetAngle(rotation);
+  rotation.delete();
+  return angle;
+};
+const stateOf = (ball) => [...read(b2.b2Body_GetPosition(ball.id)), ...read(b2.b2Body_GetLinearVelocity(ball.id)), ball.held ? 1 : 0];
+const where = () => ({ balls: balls.map(stateOf), angles: kinematic.map(([index, id]) => [index, angleOf(id)]) });
+
+const setVelocity = (ball, v) => {
+  const velocity = vec(v);
+  b2.b2Body_SetLinearVelocity(ball.id, velocity);
+  velocity.delete();
+  ball.v = v;
+};
+const setPosition = (ball, p) => {
+  const position = vec(p), rotation = b2.b2MakeRot(0);
+  b2.b2Body_SetTransform(ball.id, position, rotation);
+  position.delete();
+  rotation.delete();
+};
+
+const dt = scene.dt, n = scene.sub_steps;
+const apply = {
+  v: ([i, vx, vy]) => setVelocity(balls[i], [vx, vy]),
+  turn: ([body, omega]) => b2.b2Body_SetAngularVelocity(kinematic.find(([index]) => index === body)[1], omega),
+  hold: ([i, x, y]) => {
+    const ball = balls[i];
+    setPosition(ball, [x, y]);
+    b2.b2Body_Disable(ball.id);
+    // Disabling it ends its sensor overlaps at the next step: the driver's doing, not the ball
+    // leaving, so that end is not reported (as Box2D 2.4's muted callbacks are not).
+    ball.held = ball.muted = true;
+  },
+  release: ([i, x, y, vx, vy]) => {
+    const ball = balls[i];
+    b2.b2Body_Enable(ball.id);
+    setPosition(ball, [x, y]);
+    setVelocity(ball, [vx, vy]);
+    ball.held = ball.muted = false;
+  },
+};
 
 const fraction = (ball, [x, y]) => {
   const px = ball.to[0] - ball.from[0], py = ball.to[1] - ball.from[1];
@@ -119,83 +189,82 @@ const fraction = (ball, [x, y]) => {
   return Math.min(1, Math.max(0, ((x - ball.from[0]) * px + (y - ball.from[1]) * py) / l2));
 };
 
-// A vector handed back by the library, read and its handle freed (the step loop makes millions).
-const read = (handle) => {
-  const xy = [handle.x, handle.y];
-  handle.delete();
-  return xy;
-};
+// Where a contact of `ball` met in the step from t0 is placed. Box2D does not say when within the
+// step it began. A ball that its continuous collision stopped short in the step before (and that
+// hit nothing then) met the contact there, at the fraction of that step's straight path where it
+// stopped; otherwise the contact is placed at the fraction of this step's path where the ball
+// stands after it.
+function placed(ball, t0) {
+  const earlier = ball.previous;
+  const at = earlier && earlier.cut && !earlier.hit ? earlier : { t0, alpha: ball.alpha, from: ball.from, to: ball.to };
+  return [
+    Math.min(at.t0 + at.alpha * dt, t0 + dt),  // t0 + dt may round past the step's end
+    at.from[0] + at.alpha * (at.to[0] - at.from[0]),
+    at.from[1] + at.alpha * (at.to[1] - at.from[1]),
+  ];
+}
 
-const state = (ball) => {
-  const [x, y] = read(b2.b2Body_GetPosition(ball.id)), [vx, vy] = read(b2.b2Body_GetLinearVelocity(ball.id));
-  return { x, y, vx, vy };
-};
-
-const dt = scene.dt, n = scene.sub_steps;
-const steps = [{ t: 0, balls: Object.fromEntries(balls.map((b) => [b.name, state(b)])), contacts: [] }];
-const started = performance.now();
-const count = Math.ceil(scene.duration / dt - 1e-9);
-for (let k = 0; k < count; ++k) {
-  const t0 = k * dt;
+reply({ engine: `Box2D v3 (box2d3-wasm ${packageVersion})`, ...where() });
+for (let line = nextLine(); line !== null; line = nextLine()) {
+  const request = JSON.parse(line);
+  for (const op of request.ops) apply[op[0]](op.slice(1));
+  const t0 = request.t0;
   for (const ball of balls) {
-    const now = state(ball);
-    const v = frictionApplied([now.vx, now.vy], dt);
-    const velocity = vec(v);
-    b2.b2Body_SetLinearVelocity(ball.id, velocity);
-    velocity.delete();
-    ball.from = [now.x, now.y];
+    if (ball.held) continue;
+    const [x, y] = read(b2.b2Body_GetPosition(ball.id));
+    ball.from = [x, y];
     // Where n sub-steps of semi-implicit Euler take it, unhindered.
-    ball.to = [now.x + dt * v[0], now.y + dt * v[1] + dt * dt * scene.gravity * (n + 1) / (2 * n)];
+    ball.to = [x + dt * ball.v[0], y + dt * ball.v[1] + dt * dt * scene.gravity * (n + 1) / (2 * n)];
   }
   b2.b2World_Step(world, dt, n);
-  const step = { t: (k + 1) * dt, balls: {}, contacts: [] };
-  for (const ball of balls) {
-    const s = state(ball);
-    step.balls[ball.name] = s;
-    ball.alpha = fraction(ball, [s.x, s.y]);
-  }
-  // A hit: the first hit event of its pair in this step. Box2D does not say when within the step
-  // the contact began. A ball that its continuous collision stopped short in the step before
-  // (and that hit nothing then) met the contact there, at the fraction of that step's straight
-  // path where it stopped; otherwise the contact is placed at the fraction of this step's path
-  // where the ball stands after it.
+  const state = where();
+  for (const ball of balls) ball.alpha = ball.held ? 0 : fraction(ball, state.balls[ball.index]);
+  const contacts = [];
+  // A hit: the first hit event of its pair in this step; of two balls, the one whose name sorts
+  // first is named first, and the position is its centre.
   const events = b2.b2World_GetContactEvents(world);
   const seen = new Set();
   for (let i = 0; i < events.hitCount; ++i) {
     const hit = events.GetHitEvent(i);
-    let a = nameOfShape.get(hit.shapeIdA.index1), b = nameOfShape.get(hit.shapeIdB.index1);
+    let a = ownerOfShape.get(hit.shapeIdA.index1), b = ownerOfShape.get(hit.shapeIdB.index1);
     hit.delete();
-    if (!ballByName.has(a)) [a, b] = [b, a];
-    if (!ballByName.has(a)) continue;
-    if (ballByName.has(b) && b < a) [a, b] = [b, a];
-    if (seen.has(`${a}\u0000${b}`)) continue;
-    seen.add(`${a}\u0000${b}`);
-    const ball = ballByName.get(a);
-    const earlier = ball.previous;
-    const at = earlier && earlier.cut && !earlier.hit ? earlier : { t0, t1: step.t, alpha: ball.alpha, from: ball.from, to: ball.to };
-    const contact = {
-      t: Math.min(at.t0 + at.alpha * dt, at.t1),  // t0 + dt may round past the step's end
-      ball: a,
-      other: b,
-      x: at.from[0] + at.alpha * (at.to[0] - at.from[0]),
-      y: at.from[1] + at.alpha * (at.to[1] - at.from[1]),
-    };
-    (at === earlier ? steps[steps.length - 1] : step).contacts.push(contact);
+    if (a.ball === undefined) [a, b] = [b, a];
+    if (a.ball === undefined) continue;
+    if (b.ball !== undefined && balls[b.ball].name < balls[a.ball].name) [a, b] = [b, a];
+    const key = b.ball !== undefined ? `b${b.ball}` : `g${b.body}`;
+    if (seen.has(`${a.ball} ${key}`)) continue;
+    seen.add(`${a.ball} ${key}`);
+    const ball = balls[a.ball];
+    contacts.push(['hit', a.ball, b.ball !== undefined ? 1 : 0, b.ball ?? b.body, ...placed(ball, t0)]);
     ball.hit = true;
   }
   events.delete();
+  // A ball entering or leaving an absorber's sensor.
+  const sensors = b2.b2World_GetSensorEvents(world);
+  for (let i = 0; i < sensors.beginCount; ++i) {
+    const e = sensors.GetBeginEvent(i);
+    const sensor = ownerOfShape.get(e.sensorShapeId.index1), visitor = ownerOfShape.get(e.visitorShapeId.index1);
+    if (visitor.ball === undefined) continue;
+    balls[visitor.ball].muted = false;
+    contacts.push(['enter', visitor.ball, 0, sensor.body, ...placed(balls[visitor.ball], t0)]);
+  }
+  for (let i = 0; i < sensors.endCount; ++i) {
+    const e = sensors.GetEndEvent(i);
+    const sensor = ownerOfShape.get(e.sensorShapeId.index1), visitor = ownerOfShape.get(e.visitorShapeId.index1);
+    if (visitor.ball === undefined) continue;
+    const ball = balls[visitor.ball];
+    if (ball.muted) {
+      ball.muted = false;
+      continue;
+    }
+    contacts.push(['exit', visitor.ball, 0, sensor.body, ...placed(ball, t0)]);
+  }
+  sensors.delete();
+  // A held ball has no path in this step: a hit in the step after its release is placed there.
   for (const ball of balls) {
-    ball.previous = { t0, t1: step.t, alpha: ball.alpha, from: ball.from, to: ball.to, cut: ball.alpha < 1 - 1e-4, hit: ball.hit === true };
+    ball.previous = ball.held ? null
+      : { t0, alpha: ball.alpha, from: ball.from, to: ball.to, cut: ball.alpha < 1 - 1e-4, hit: ball.hit === true };
     ball.hit = false;
   }
-  steps.push(step);
+  reply({ ...state, contacts });
 }
-const wallSeconds = (performance.now() - started) / 1000;
-
-const header = { format: 'gizmo-trace', version: 1, engine: `Box2D v3 (box2d3-wasm ${packageVersion})`, contacts: true, wall_seconds: wallSeconds };
-const lines = [JSON.stringify(header)];
-for (const step of steps) {
-  step.contacts.sort((p, q) => p.t - q.t);
-  lines.push(JSON.stringify(step));
-}
-process.stdout.write(lines.join('\n') + '\n');

@@ -1,9 +1,9 @@
 // The scene that verify/box2d3/run_scene.mjs builds in Box2D v3: the bodies of the one mapping
-// (box2d_mapping.cpp) written out as they are, so that no second copy of it exists.
+// (box2d_mapping.cpp) written out as they are, so that no second copy of it exists, in the order
+// the driver numbers them (box2d_engine.hpp).
 #include <nlohmann/json.hpp>
 
 #include "gizmo/core/board/physics_params.hpp"
-#include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/verify/box2d3_run.hpp"
 #include "gizmo/verify/box2d_mapping.hpp"
 
@@ -38,21 +38,7 @@ Json bodyJson(const Box2dBody& body) {
 
 }  // namespace
 
-std::optional<std::string> box2d3CannotModel(const BoardSpec& board) {
-  if (std::optional<std::string> why = box2dCannotModel(board)) return why;
-  for (const GizmoSpec& g : board.gizmos) {
-    const Box2dBody body = box2dBodyOf(g);
-    const std::string gizmo = std::string(gizmoTypeWord(g.type)) + " '" + g.name + "'";
-    if (body.kinematic)
-      return "the Box2D v3 cross-check does not model the " + gizmo + " yet (it would turn on the core's schedule each step)";
-    if (body.sensor)
-      return "the Box2D v3 cross-check does not model the " + gizmo + " yet (the core's capture would act each step)";
-    if (body.restitution != 1)
-      return "the Box2D v3 cross-check cannot model the " + gizmo + ": v3 takes the larger of two coefficients of "
-             "reflection, and a ball's is 1";
-  }
-  return std::nullopt;
-}
+std::optional<std::string> box2d3CannotModel(const BoardSpec& board) { return box2dCannotModel(board); }
 
 std::string box2d3Scene(const RunRequest& request, const Box2dOptions& options) {
   Json bodies = Json::array({bodyJson(box2dOuterWalls())});
@@ -61,13 +47,10 @@ std::string box2d3Scene(const RunRequest& request, const Box2dOptions& options) 
   for (const BallSpec& b : request.board.balls)
     balls.push_back({{"name", b.name}, {"x", b.x}, {"y", b.y}, {"vx", b.vx}, {"vy", b.vy}, {"radius", kBallRadius}});
   const Json scene{{"format", "gizmo-box2d-scene"},
-                   {"version", 1},
+                   {"version", 2},
                    {"gravity", request.board.gravity},
-                   {"mu", request.board.mu},
-                   {"mu2", request.board.mu2},
                    {"rest_speed", PhysicsParams<double>{}.restSpeed},
                    {"dt", options.dt},
-                   {"duration", request.duration},
                    {"sub_steps", kBox2d3SubSteps},
                    {"bullets", options.bullet},
                    {"continuous", options.continuous},

@@ -177,11 +177,12 @@ class SceneRunner {
     if (v3) {
       if (std::optional<std::string> why = box2d3CannotModel(scene_.request.board)) r.stopped = *why;
       else if (std::optional<std::string> missing = box2d3Unavailable()) r.stopped = "not run: " + *missing;
-      // A v3 run is a node program whose trace, a line per step, is read back: at the fine
-      // steps that reading dominates, and under the sanitizers the quick study took ten times its
-      // old length. The quick plan runs v3 at its coarsest step, once; the full plan runs it all.
-      if (r.stopped.empty() && plan_.quick && dt != plan_.box2dSteps.front())
-        r.stopped = "left out of the quick plan, which runs Box2D v3 at its coarsest step only";
+      // A v3 run is a node program stepped over a pipe, a request and a reply a step: at the
+      // fine steps those dominate, and under the sanitizers the quick study took ten times its
+      // old length. The quick plan runs v3 at its coarsest step with bullets, once (a node start
+      // each); the full plan runs it all.
+      if (r.stopped.empty() && plan_.quick && (dt != plan_.box2dSteps.front() || !bullet))
+        r.stopped = "left out of the quick plan, which runs Box2D v3 at its coarsest step with bullets only";
       if (!r.stopped.empty()) return;
     }
     std::vector<double> seconds;
@@ -190,7 +191,7 @@ class SceneRunner {
     try {
       for (int k = 0; k < repeats; ++k) {
         RunRecord record =
-            v3 ? runBox2d3(scene_.request, options, scene_.request.duration).run.record : runBox2d(scene_.request, options);
+            v3 ? runBox2d3(scene_.request, options).run.record : runBox2d(scene_.request, options);
         seconds.push_back(record.wallSeconds);
         if (k == 0) first = std::move(record);
         else if (record.collisions.size() != first.collisions.size() && r.stopped.empty())

@@ -1,9 +1,11 @@
 #pragma once
 // A whole run in Box2D v3 (docs/verification.md, "Box2D v3"): the board of a RunRequest exported
 // as a scene (JSON: the bodies and shapes of the one mapping, box2d_mapping.hpp, the balls and
-// the run's settings), run by the project's node program verify/box2d3/run_scene.mjs in the
-// box2d3-wasm package, and its run read back as a trace (engine_trace.hpp). scripts/setup.sh
-// installs the package (scripts/setup-box2d3.sh).
+// the run's settings), built by the project's node program verify/box2d3/run_scene.mjs in the
+// box2d3-wasm package and stepped by the same driver as Box2D 2.4's run, which applies the
+// core's rules between steps (flippers, spinners, absorbers, triggers, keys, friction) and asks
+// the program for one step at a time over a pipe. scripts/setup.sh installs the package
+// (scripts/setup-box2d3.sh).
 #include <optional>
 #include <string>
 
@@ -12,14 +14,17 @@
 namespace gizmo::verify {
 
 inline constexpr int kBox2d3SubSteps = 4;  // Box2D v3's recommended sub-steps per step
+// Box2D v3's limits (its constants.h and b2DefaultWorldDef), counted as the run's speed-capped
+// and rotation-capped steps: a ball's speed, and a body's turn in one step (B2_MAX_ROTATION).
+inline constexpr double kBox2d3MaxSpeed = 400.0;
+inline constexpr double kBox2d3MaxRotation = 0.7853981633974483;  // π/4
 
-// Why the v3 program cannot run the board, or nothing. It builds static bodies and balls only: a
-// flipper or a spinner would need the core's schedule each step, an absorber the core's capture,
-// and it mixes coefficients of restitution by their maximum, so every gizmo's must be 1.
+// Why the v3 program cannot run the board, or nothing: what Box2D 2.4's bridge cannot model (a
+// spawner), since both run under the one driver.
 std::optional<std::string> box2d3CannotModel(const BoardSpec& board);
 
-// The scene the node program builds: request.board run for request.duration seconds at options.dt
-// with options.bullet and options.continuous.
+// The scene the node program builds: request.board run at options.dt with options.bullet and
+// options.continuous.
 std::string box2d3Scene(const RunRequest& request, const Box2dOptions& options);
 
 // Why the node program cannot run here (no node on the PATH, or the package not installed), or
@@ -27,9 +32,9 @@ std::string box2d3Scene(const RunRequest& request, const Box2dOptions& options);
 // source tree's verify/box2d3.
 std::optional<std::string> box2d3Unavailable();
 
-// The program's run of the request (its wall_seconds the program's own figure, without node's
-// start-up), which must reach board time `end`; std::runtime_error when the program fails or
-// writes a trace that does not read.
-EngineTrace runBox2d3(const RunRequest& request, const Box2dOptions& options, double end);
+// The run of the request for request.duration seconds: its engine's name and its record (its
+// wall_seconds the steps' cost, the round trips to node included, node's start-up not);
+// std::runtime_error when the program fails or says something that does not read.
+EngineTrace runBox2d3(const RunRequest& request, const Box2dOptions& options);
 
 }  // namespace gizmo::verify

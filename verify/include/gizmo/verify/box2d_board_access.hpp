@@ -29,7 +29,7 @@ class DrivenBoardAccess final : public BoardAccess<double> {
   bool roomForBall(const Vec2<double>&, GizmoId, GizmoId) const override { return false; }
   bool cradled(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
   bool boxedAlong(GizmoId, const Vec2<double>&, const Vec2<double>&, GizmoId) const override { return false; }
-  // The bridge calls a gizmo's action itself (a spinner's on its own hits, Box2dBridge::handle);
+  // The driver calls a gizmo's action itself (a spinner's on its own hits, box2d_driver.cpp);
   // a board with a spawner, whose action adds balls, is refused before it gets here.
   void performAction(GizmoId) override {}
   GizmoId spawnBall(const Vec2<double>&) override { return kNoGizmo; }

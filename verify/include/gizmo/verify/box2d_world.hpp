@@ -2,7 +2,7 @@
 // A whole run in Box2D: the board of a RunRequest built as Box2D bodies (box2d_mapping.hpp),
 // stepped at a fixed step size, with the Gizmoball rules that Box2D does not have performed by
 // the core's own gizmos (flipper swings, absorber captures and fires, triggers, key input,
-// the friction law). What it leaves behind is the same record our run leaves, so that
+// the friction law) through the driver that steps Box2D v3 too (verify/src/box2d_driver.hpp). What it leaves behind is the same record our run leaves, so that
 // box2d_crosscheck.hpp compares like with like.
 #include <cstdint>
 #include <string>
