@@ -412,15 +412,17 @@ EMSCRIPTEN_KEEPALIVE double gp_save_split() { return game ? game->savedSplit : -
 
 // Hands the page every chunk closed since it last took them, framed as the log holds them, one
 // after another, and forgets their bytes (not their place in the log's index): returns their
-// size, the bytes at gp_taken(), kept until the next call.
+// size, the bytes at gp_taken(), kept until gp_forget_taken().
 EMSCRIPTEN_KEEPALIVE double gp_take_chunks() {
   if (!game) return 0;
-  game->handed.clear();
   game->kept.handOut(game->handed);
-  if (game->handed.capacity() > 2 * game->handed.size() + 4096) game->handed.shrink_to_fit();
   return double(game->handed.size());
 }
 EMSCRIPTEN_KEEPALIVE const std::uint8_t* gp_taken() { return game ? game->handed.data() : nullptr; }
+// The page has copied the chunks out: their memory goes back.
+EMSCRIPTEN_KEEPALIVE void gp_forget_taken() {
+  if (game) std::vector<std::uint8_t>().swap(game->handed);
+}
 
 // What the module holds for the game's recording: the closed chunks it keeps and the index
 // entries of all, the chunks last handed out, and the log last written.

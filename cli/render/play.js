@@ -320,15 +320,17 @@
       }
       const name = logName(game.branch ? "-branch" : "");
       game.parent = { name, bytes };
-      startBranch(name);
+      startBranch(name, log.time);
       return true;
     });
   }
-  function startBranch(parentName) {
+  // The game goes on as the branch the module took (of a log opened, or, rewinding, of the game
+  // itself as it was at board time `from`).
+  function startBranch(parentName, from) {
     store = newStore();
     const now = game.api.now();
     Object.assign(game, { target: now, now, stopped: "", pending: [], inputs: [], start: game.api.startTime(),
-                          branch: { parent: parentName, at: now, event: game.api.branchEvent() } });
+                          branch: { parent: parentName, at: now, event: game.api.branchEvent(), from } });
     game.events = game.api.events();
     game.names = [];
     ui.status.textContent = "";
@@ -453,7 +455,8 @@
     const size = game.api.takeChunks();
     if (!size) return;
     const at = game.api.taken();
-    const raw = new Blob([game.module.HEAPU8.subarray(at, at + size)]);
+    const raw = new Blob([game.module.HEAPU8.subarray(at, at + size)]);  // a copy
+    game.api.forgetTaken();
     const s = store, part = { raw: size, blob: raw, plain: true, done: null };
     s.parts.push(part);
     s.raw += size;
@@ -573,6 +576,7 @@
       saveSplit: m.cwrap("gp_save_split", "number", []),
       takeChunks: m.cwrap("gp_take_chunks", "number", []),
       taken: m.cwrap("gp_taken", "number", []),
+      forgetTaken: m.cwrap("gp_forget_taken", null, []),
       heldBytes: m.cwrap("gp_held_bytes", "number", []),
       buffer: m.cwrap("gp_buffer", "number", ["number"]),
       openLog: m.cwrap("gp_open_log", "number", ["string"]),

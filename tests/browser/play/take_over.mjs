@@ -140,9 +140,10 @@ const one = checkBranch("branch", parentLog, first.file, taken, first.end);
 say(`branch: gizmo replay: ${one.replayed}; ${one.inputs} inputs; byte for byte gizmo record --from's`);
 run("replay", parentOfSecond);
 const two = checkBranch("rewound", parentOfSecond, second.file, rewound, second.end);
-// Five seconds back from the moment of the click, which the board reached a frame or two after the probe before it.
-const back = beforeRewind.time_value - 5;
-if (!(rewound.branch.at > back - 0.011 && rewound.branch.at < back + 0.5))
-  fail(`rewound to ${rewound.branch.at} s from about ${beforeRewind.time_value} s: not five seconds back`);
-say(`rewound to t = ${rewound.branch.at} s: gizmo replay: ${two.replayed}; ${two.inputs} inputs; byte for byte gizmo record --from's`);
+// Five seconds back from the moment of the click (a little after the probe before it), rounded
+// down to a tick end of the log's 0.01 s.
+const { at: back, from } = rewound.branch;
+if (!(from >= beforeRewind.time_value && back <= from - 5 && back > from - 5 - 0.0100001))
+  fail(`rewound to ${back} s from ${from} s (the probe before at ${beforeRewind.time_value} s): not five seconds back`);
+say(`rewound from t = ${from} s to ${back} s: gizmo replay: ${two.replayed}; ${two.inputs} inputs; byte for byte gizmo record --from's`);
 console.log("play take_over: passed");
