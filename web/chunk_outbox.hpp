@@ -2,8 +2,8 @@
 // Where the game's Recorder puts the chunks it closes (docs/play.md, "Memory"). A chunk is kept in
 // the module's memory until the page takes it: gp_take_chunks() hands the page every chunk closed
 // since, framed as the log holds them, and forgets their bytes, keeping only their index entries
-// (a few dozen bytes each). The page compresses them into its own storage. A log is then written
-// with its header, the chunks the page holds indexed but not written (the page puts them in),
+// (a few dozen bytes each); the page keeps them as Blobs, in the browser's storage. A log is then
+// written with its header, the chunks the page holds indexed but not written (the page puts them in),
 // the chunks still here written, and the chunk in progress with the end (Recorder::finishCopy).
 // A page that never takes any (bench/play_speed.mjs) gets whole logs, as KeptChunks gave.
 #include <cstdint>

@@ -375,7 +375,8 @@ EMSCRIPTEN_KEEPALIVE double gp_save() {
     gizmo::replay::LogWriter writer(game->saved);
     // The header, made now, and every chunk closed (those the page holds go in at savedSplit).
     const auto headerAndChunks = [&] {
-      const std::vector<std::uint8_t> header = gizmo::replay::recordHeader(runSoFar(), precision, game->warnings, game->origin);
+      const std::vector<std::uint8_t> header =
+          gizmo::replay::recordHeader(runSoFar(), precision, game->warnings, game->origin);
       if (game->origin) writer.branchHeader(header);
       else writer.header(header);
       if (game->kept.handedOut() > 0) game->savedSplit = double(game->saved.size());
@@ -435,11 +436,11 @@ EMSCRIPTEN_KEEPALIVE void gp_forget_saved() {
 }
 
 // The page's own check of the log gp_save() wrote (from_buffer 0), or of the log in gp_buffer()'s
-// bytes (from_buffer 1: the page joined the chunks it holds into it), as `gizmo replay` makes it: the log's board and
-// inputs run again and every decision compared; the log recorded again from them, which must give
-// the same bytes; then, when the log ends at the board's present, every ball the log has there
-// compared with the game's, bit for bit. 1 identical, 0 not, −1 the log does not read;
-// gp_text() says what was found.
+// bytes (from_buffer 1: the page joined the chunks it holds into it), as `gizmo replay` makes it:
+// the log's board and inputs run again and every decision compared; the log recorded again from
+// them (`gizmo record`'s recordRun, or recordBranch for a branch), which must give the same bytes;
+// then, when the log ends at the board's present, every ball the log has there compared with the
+// game's, bit for bit. 1 identical, 0 not, −1 the log does not read; gp_text() says what was found.
 EMSCRIPTEN_KEEPALIVE int gp_check(int fromBuffer) {
   if (!game) return -1;
   const std::vector<std::uint8_t>& written = fromBuffer ? incoming : game->saved;

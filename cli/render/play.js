@@ -42,6 +42,7 @@
     simMs: 0,         // the last frame's simulation time
     bench: null,
     busy: false,      // a log being written, joined or handed over: the game waits
+    pauseAt: null,    // a board time at which to pause (set by a test)
     start: 0,         // where the game's log starts: 0, or the tick boundary a branch starts from
     branch: null,     // once a log is taken over: {parent, at (board time), event (the parent's)}
     parent: null,     // the log taken over: {name, bytes}, for "save the log taken over"
@@ -204,6 +205,11 @@
     if (game.lastFrame !== null) {
       const wall = Math.min(0.25, (now - game.lastFrame) / 1000);
       if (!game.paused && !game.stopped && !shown && !game.busy) game.target += game.bench ? 1 / 60 : wall * Number(ui.speed.value);
+      if (game.pauseAt !== null && game.target >= game.pauseAt) {  // a test's stop (gizmoPlay.pauseAt)
+        game.target = Math.max(game.now, game.pauseAt);
+        game.pauseAt = null;
+        setPaused(true);
+      }
       game.frameTimes.push(now);
       while (game.frameTimes.length && game.frameTimes[0] < now - 1000) game.frameTimes.shift();
       game.fps = game.frameTimes.length;
@@ -389,7 +395,7 @@
     const note = game.api.text();
     const time = game.now;
     game.api.forgetSaved();
-    const parts = split < 0 ? [bytes] : [bytes.subarray(0, split), ...(await storedChunks(store)), bytes.subarray(split)];
+    const parts = split < 0 ? [bytes] : [bytes.subarray(0, split), ...storedChunks(store), bytes.subarray(split)];
     const blob = new Blob(parts, { type: "application/octet-stream" });
     return { blob, size: blob.size, time, ms: performance.now() - start, note };
   }
@@ -444,51 +450,32 @@
 
   // ---- The recording's closed chunks ------------------------------------------------------------
   // The module hands the page each chunk its Recorder closes (gp_take_chunks, at every frame) and
-  // keeps only its place in the log's index. The page compresses each with the browser's
-  // CompressionStream (gzip) into a Blob, which the browser keeps in its own storage (on disk
-  // when large), so that the module's memory stays bounded however long the game. A log written
-  // joins them back, decompressed, in order. Where the browser has no CompressionStream, the
-  // chunks are kept as they are.
-  function newStore() { return { parts: [], raw: 0, stored: 0, failed: "" }; }
+  // keeps only its place in the log's index. The page keeps them as Blobs, which the browser holds
+  // in its own storage (on disk when large), out of the module's memory, so that the module's
+  // memory stays bounded however long the game. A log written joins them back, in order. (They are
+  // not compressed: gzip makes these records, mostly doubles, a fifth smaller, and at 64× the
+  // browser's CompressionStream took longer than the game itself: docs/play.md, "Memory".)
+  function newStore() { return { parts: [], bytes: 0, moduleMost: 0 }; }
   let store = newStore();
   function takeChunks() {
     const size = game.api.takeChunks();
-    if (!size) return;
-    const at = game.api.taken();
-    const raw = new Blob([game.module.HEAPU8.subarray(at, at + size)]);  // a copy
-    game.api.forgetTaken();
-    const s = store, part = { raw: size, blob: raw, plain: true, done: null };
-    s.parts.push(part);
-    s.raw += size;
-    if (typeof CompressionStream === "undefined") {
-      s.stored += size;
-      return;
+    if (size) {
+      const at = game.api.taken();
+      store.parts.push(new Blob([game.module.HEAPU8.subarray(at, at + size)]));  // a copy
+      store.bytes += size;
+      game.api.forgetTaken();
     }
-    part.done = new Response(raw.stream().pipeThrough(new CompressionStream("gzip"))).blob().then((blob) => {
-      part.blob = blob;
-      part.plain = false;
-      s.stored += blob.size;
-    }, (e) => {
-      s.failed = "a chunk could not be compressed (" + e + "); it is kept as it is";
-      s.stored += size;
-    });
+    store.moduleMost = Math.max(store.moduleMost, game.api.heldBytes());
   }
-  // The chunks the page holds, decompressed, in the order the module handed them over.
-  async function storedChunks(s) {
-    const parts = s.parts.slice();
-    await Promise.all(parts.map((p) => p.done));
-    return Promise.all(parts.map((p) => p.plain ? p.blob :
-      new Response(p.blob.stream().pipeThrough(new DecompressionStream("gzip"))).blob()));
-  }
+  // The chunks the page holds, in the order the module handed them over.
+  function storedChunks(s) { return s.parts.slice(); }
   // What the game's recording holds: in the module (the chunks not yet handed over, the index,
-  // the last log written) and in the page (each chunk compressed, or as it came while it is being
-  // compressed); and the chunks' bytes as the log holds them, as the module kept them all before.
+  // the last log written, at most that after any frame) and in the page's Blobs.
   function held() {
-    const pending = store.parts.filter((p) => p.plain && p.done).reduce((n, p) => n + p.raw, 0);
     const module = game.api.heldBytes();
-    return { module, page: store.stored + pending, chunks: store.raw, parts: store.parts.length, failed: store.failed,
-             per_event: game.events > 0 ? (module + store.stored + pending) / game.events : 0,
-             raw_per_event: game.events > 0 ? store.raw / game.events : 0 };
+    return { module, module_most: store.moduleMost, page: store.bytes, parts: store.parts.length,
+             module_per_event: game.events > 0 ? module / game.events : 0,
+             page_per_event: game.events > 0 ? store.bytes / game.events : 0 };
   }
 
   // ---- What the tests read --------------------------------------------------------------------
@@ -628,7 +615,8 @@
     window.addEventListener("pointermove", (ev) => { if (dragging && shown) seekShown(TimelineView.timeAt(ui.timeline, ev, shown.end)); });
     window.addEventListener("pointerup", () => { dragging = false; });
     ui.scrub.addEventListener("input", () => { if (shown) seekShown(Number(ui.scrub.value) / 100000 * shown.end); });
-    window.gizmoPlay = { probe, save, saveParent, check, restart, setPaused, takeOver, rewind, ready: true,
+    const pauseAt = (t) => { game.pauseAt = t; };
+    window.gizmoPlay = { probe, save, saveParent, check, restart, setPaused, pauseAt, takeOver, rewind, ready: true,
                          bench: () => game.bench && game.bench.done && game.bench.result };
     readBoard();
     requestAnimationFrame(frame);

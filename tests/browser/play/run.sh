@@ -28,7 +28,7 @@ play_case() {  # NAME BOARD SCENARIO
 }
 play_case spec_example_keys fixtures/boards/spec-example.txt keys
 play_case crowded_30s fixtures/boards/play/crowded-100-balls.txt crowded
-# A long game of the crowded board at 64× (60 s of board time or more): the recording's memory bounded.
+# A long game of the crowded board at 64×, 60 s of board time: the recording's memory bounded.
 play_case crowded_long fixtures/boards/play/crowded-100-balls.txt long
 # Spawners: each space bar press adds a ball, and a sink feeds a ball back; the game's balls grow.
 play_case spawner_keys fixtures/boards/gizmos/spawner.txt keys

@@ -67,7 +67,7 @@ async function checkAndSave(browser, name) {
 }
 
 const browser = await Browser.start({ profileDir: path.join(outDir, "profile"), downloadDir: downloads });
-let scrubbed, taken, first, beforeRewind, rewound, second, parentOfSecond;
+let scrubbed, taken, first, beforeRewind, rewound, second, parentOfSecond, dropped;
 try {
   await browser.open("file://" + path.resolve(page));
   await browser.waitFor("return window.gizmoPlay && window.gizmoPlay.ready;", 60000, "the play module to start");
@@ -99,6 +99,15 @@ try {
   parentOfSecond = path.join(outDir, "before-rewind.gzlog");
   say(`saved ${await nextDownload(downloads, known, parentOfSecond)} (the log taken over by the rewind) as before-rewind.gzlog`);
   await browser.screenshot(path.join(outDir, "saved.png"));
+  // A log file dropped on the page opens as one chosen with the button (a drop made by a script:
+  // WebDriver has no drag of a file from outside the page).
+  await browser.run(`const bytes = Uint8Array.from(atob(arguments[0]), (c) => c.charCodeAt(0));
+    const files = new DataTransfer();
+    files.items.add(new File([bytes], "dropped.gzlog"));
+    document.getElementById("stage").dispatchEvent(new DragEvent("drop", { dataTransfer: files, bubbles: true, cancelable: true }));`,
+    fs.readFileSync(second.file).toString("base64"));
+  dropped = await browser.waitFor("const p = window.gizmoPlay.probe(); return p.shown && p.shown.name === 'dropped.gzlog' && p;",
+                                  30000, "the dropped log to open");
 } finally {
   await browser.quit();
 }
@@ -146,4 +155,7 @@ const { at: back, from } = rewound.branch;
 if (!(from >= beforeRewind.time_value && back <= from - 5 && back > from - 5 - 0.0100001))
   fail(`rewound to ${back} s from ${from} s (the probe before at ${beforeRewind.time_value} s): not five seconds back`);
 say(`rewound from t = ${from} s to ${back} s: gizmo replay: ${two.replayed}; ${two.inputs} inputs; byte for byte gizmo record --from's`);
+// The dropped branch log shown from its start: the board where the log has it there.
+sameBalls(second.file, dropped.shown.time_value, dropped.shown.balls, "the dropped log at its start");
+say(`a branch log dropped on the page opens at its start, t = ${dropped.shown.time_value} s, every ball where the log has it`);
 console.log("play take_over: passed");
