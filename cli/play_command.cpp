@@ -73,19 +73,19 @@ int playCommand(const PlayOptions& o) {
   std::string module, why;
   if (!readModule(modulePath(o), module, why)) return fail(why);
   PlayPage page;
-  page.title = o.board.empty() ? checked.boardName : std::filesystem::path(o.board).filename().string();
-  page.board = checked.request.board;
-  page.boardWarnings = checked.boardWarnings;
-  page.model = checked.request.model;
-  page.maxTick = checked.request.maxTick;
+  page.game.title = o.board.empty() ? checked.boardName : std::filesystem::path(o.board).filename().string();
+  page.game.board = checked.request.board;
+  page.game.boardWarnings = checked.boardWarnings;
+  page.game.model = checked.request.model;
+  page.game.maxTick = checked.request.maxTick;
   page.module = std::move(module);
   try {
     writeFileWhole(o.output, playHtml(page));
   } catch (const std::exception& e) {
     return fail(e.what());
   }
-  std::cout << o.output << ": " << page.title << ", " << motionModelName(page.model) << " model, ticks of " << page.maxTick
-            << " s; open it in a browser to play\n";
+  std::cout << o.output << ": " << page.game.title << ", " << motionModelName(page.game.model) << " model, ticks of "
+            << page.game.maxTick << " s; open it in a browser to play\n";
   return kExitOk;
 }
 

@@ -8,14 +8,9 @@
 
 #include "render_board_drawing.hpp"
 #include "render_path_overlay.hpp"
-#include "render_run_track.hpp"
+#include "render_player_data.hpp"
 
 namespace gizmo::cli {
-
-struct PlayerRun {
-  std::string label;  // what the page calls the run (the log's file name)
-  RunTrack track;
-};
 
 // Where two runs part (gizmo diff's finding), for the page to mark.
 struct Parting {

@@ -7,17 +7,28 @@
 // tick up to it. A key seen before a frame becomes an input at that frame's board time, which is
 // always later than the board's present, so the board takes it exactly as a run that had it from
 // the start would, and the log (board, model, tick, inputs, end) is all a replay needs.
+//
+// The page also opens a saved log (the file button, or a file dropped on the page): the module
+// reads it and gives the log's board and its run as the replay player holds it (run_data.js),
+// which the page scrubs on its timeline (timeline_view.js) and draws with board_view.js. "play
+// from here" takes the log over at the moment shown (the module's startBranch, the code of
+// `gizmo record --from`), "rewind 5 s" takes the game's own log over five seconds back; either
+// way the game goes on as a branch, recorded live, and saves as a branch log.
 "use strict";
 (function () {
-  const data = JSON.parse(document.getElementById("game-data").textContent);
-  const board = data.board;
+  let data = JSON.parse(document.getElementById("game-data").textContent);
+  let board = data.board;
   const ui = {
     board: document.getElementById("board"), clock: document.getElementById("clock"),
     status: document.getElementById("status"), keys: document.getElementById("keys"),
     logStatus: document.getElementById("log-status"), pause: document.getElementById("pause"),
     restart: document.getElementById("restart"), speed: document.getElementById("speed"),
     save: document.getElementById("save"), check: document.getElementById("check"),
-    probe: document.getElementById("probe"),
+    probe: document.getElementById("probe"), openLog: document.getElementById("open-log"),
+    takeOver: document.getElementById("take-over"), rewind: document.getElementById("rewind"),
+    saveParent: document.getElementById("save-parent"), logView: document.getElementById("log-view"),
+    scrub: document.getElementById("scrub"), timeline: document.getElementById("timeline"),
+    touchKeys: document.getElementById("touch-keys"), branch: document.getElementById("branch"),
   };
   const view = { scale: 1, margin: 0.3 };
   const game = {
@@ -30,7 +41,14 @@
     lastFrame: null, frameTimes: [], fps: 0,
     simMs: 0,         // the last frame's simulation time
     bench: null,
+    busy: false,      // a log being written, joined or handed over: the game waits
+    pauseAt: null,    // a board time at which to pause (set by a test)
+    start: 0,         // where the game's log starts: 0, or the tick boundary a branch starts from
+    branch: null,     // once a log is taken over: {parent, at (board time), event (the parent's)}
+    parent: null,     // the log taken over: {name, bytes}, for "save the log taken over"
   };
+  // A log the page opened, shown on its timeline while the game waits: null while playing.
+  let shown = null;   // {name, run (run_data.js), start, end, t, done, bins, balls}
 
   // ---- Keys ---------------------------------------------------------------------------------------
   // A key event's code as board files write it (Java's key codes, Gizmoball's KeyConnect): letters
@@ -60,26 +78,56 @@
     if (code >= 112 && code <= 123) return "F" + (code - 111);
     return "key " + code;
   }
-  const listened = new Map(data.keys.map((k) => [k.code, k]));
+  let listened = new Map(data.keys.map((k) => [k.code, k]));
 
+  // A key of the board going down or up, from the keyboard or a key button (source "key", or
+  // the pointer's type: "touch", "pen", "mouse"): taken at the next frame's board time.
+  function press(code, up, trusted, source) {
+    if (up ? !game.held.has(code) : game.held.has(code)) return;
+    if (up) game.held.delete(code); else game.held.add(code);
+    if (!shown) game.pending.push({ code, up, trusted, source });
+    showKeys();
+  }
   function onKey(ev, up) {
     const code = boardKeyCode(ev);
     if (!listened.has(code)) return;
     ev.preventDefault();  // a board key never scrolls the page or presses a focused button
     if (ev.repeat) return;  // held down: one input, not one per repeat
-    if (up ? !game.held.has(code) : game.held.has(code)) return;
-    if (up) game.held.delete(code); else game.held.add(code);
-    game.pending.push({ code, up, trusted: ev.isTrusted });
-    showKeys();
+    press(code, up, ev.isTrusted, "key");
   }
   window.addEventListener("keydown", (ev) => onKey(ev, false), true);
   window.addEventListener("keyup", (ev) => onKey(ev, true), true);
   // A key released while the page had no focus never sends its keyup: release it at the next frame.
   window.addEventListener("blur", () => {
-    for (const code of game.held) game.pending.push({ code, up: true, trusted: false });
+    for (const code of game.held) if (!shown) game.pending.push({ code, up: true, trusted: false, source: "blur" });
     game.held.clear();
     showKeys();
   });
+
+  // ---- Key buttons (a touch screen) ---------------------------------------------------------------
+  // Each key the board listens to is also a button under the board: a finger (or a pen, or the
+  // mouse) on it presses the key, lifting it releases the key. The button keeps the pointer while
+  // it is down, so a finger that slides off still releases the key it pressed.
+  function showTouchKeys() {
+    ui.touchKeys.innerHTML = "";
+    for (const k of data.keys) {
+      const button = document.createElement("button");
+      button.className = "touch-key";
+      button.dataset.code = String(k.code);
+      button.textContent = keyName(k.code);
+      button.title = "key " + keyName(k.code) + " (touch and hold)";
+      button.addEventListener("pointerdown", (ev) => {
+        ev.preventDefault();
+        button.setPointerCapture(ev.pointerId);
+        press(k.code, false, ev.isTrusted, ev.pointerType || "pointer");
+      });
+      const release = (ev) => press(k.code, true, ev.isTrusted, ev.pointerType || "pointer");
+      button.addEventListener("pointerup", release);
+      button.addEventListener("pointercancel", release);
+      button.addEventListener("contextmenu", (ev) => ev.preventDefault());  // a long press is a held key
+      ui.touchKeys.appendChild(button);
+    }
+  }
 
   // ---- The simulator ----------------------------------------------------------------------------
   // Hands the keys seen to the board at the frame's board time, then runs the ticks up to it.
@@ -88,11 +136,12 @@
     while (game.pending.length && !game.stopped) {
       const k = game.pending[0];
       if (!game.api.key(k.code, k.up ? 1 : 0, game.target)) break;  // not after the present yet
-      game.inputs.push({ code: k.code, up: k.up, time: game.target, trusted: k.trusted });
+      game.inputs.push({ code: k.code, up: k.up, time: game.target, trusted: k.trusted, source: k.source });
       game.pending.shift();
     }
     game.now = game.api.advance(game.target);
     game.events = game.api.events();
+    takeChunks();
     readBoard();
     game.simMs = performance.now() - start;
   }
@@ -117,10 +166,15 @@
   // ---- Drawing ----------------------------------------------------------------------------------
   function layout() {
     BoardView.fitBoard(ui.board, document.getElementById("stage"), board, view);
+    if (shown) {
+      view.timeline = BoardView.fitCanvas(ui.timeline, ui.timeline.clientWidth, ui.timeline.clientHeight);
+      shown.bins = null;
+    }
     draw();
   }
   function draw() {
     if (!view.ctx) return;
+    if (shown) return drawShown();
     const ctx = BoardView.beginBoard(view, board);
     board.gizmos.forEach((g, i) => BoardView.drawGizmo(ctx, g, game.swings[i + 1] || 0));
     game.balls.forEach((b, i) => BoardView.drawBall(ctx, board, b, i, null));
@@ -129,6 +183,7 @@
       game.fps.toFixed(0) + " frames/s · simulation " + game.simMs.toFixed(1) + " ms/frame";
   }
   function showKeys() {
+    for (const b of ui.touchKeys.children) b.classList.toggle("held", game.held.has(Number(b.dataset.code)));
     ui.keys.innerHTML = "";
     if (!data.keys.length) ui.keys.innerHTML = "<li class=\"hint\">This board listens to no key.</li>";
     for (const k of data.keys) {
@@ -149,13 +204,18 @@
   function frame(now) {
     if (game.lastFrame !== null) {
       const wall = Math.min(0.25, (now - game.lastFrame) / 1000);
-      if (!game.paused && !game.stopped) game.target += game.bench ? 1 / 60 : wall * Number(ui.speed.value);
+      if (!game.paused && !game.stopped && !shown && !game.busy) game.target += game.bench ? 1 / 60 : wall * Number(ui.speed.value);
+      if (game.pauseAt !== null && game.target >= game.pauseAt) {  // a test's stop (gizmoPlay.pauseAt)
+        game.target = Math.max(game.now, game.pauseAt);
+        game.pauseAt = null;
+        setPaused(true);
+      }
       game.frameTimes.push(now);
       while (game.frameTimes.length && game.frameTimes[0] < now - 1000) game.frameTimes.shift();
       game.fps = game.frameTimes.length;
     }
     game.lastFrame = now;
-    step();
+    if (!shown && !game.busy) step();
     draw();
     if (game.bench) benchFrame();
     requestAnimationFrame(frame);
@@ -168,23 +228,160 @@
   }
   function restart() {
     game.api.restart();
-    Object.assign(game, { target: 0, now: 0, events: 0, stopped: "", pending: [], inputs: [] });
+    Object.assign(game, { target: 0, now: 0, events: 0, stopped: "", pending: [], inputs: [], start: 0, branch: null });
     game.held.clear();
+    shown = null;
+    store = newStore();
     ui.status.textContent = "";
+    showMode();
     readBoard();
     showKeys();
   }
 
+  // ---- A log opened, scrubbed and taken over ------------------------------------------------------
+  // The page's game becomes the log's board (its keys, model and tick); the log is shown on its
+  // timeline at its start, and the game waits until it is taken over.
+  function openLogBytes(bytes, name) {
+    handIn(bytes);
+    if (!game.api.openLog(name)) {
+      ui.logStatus.textContent = "Cannot open " + name + ": " + game.api.text();
+      ui.logStatus.className = "bad";
+      return false;
+    }
+    const opened = JSON.parse(game.api.text());
+    store = newStore();
+    data = opened.game;
+    board = data.board;
+    listened = new Map(data.keys.map((k) => [k.code, k]));
+    const run = RunData.loadRun(opened.run);
+    shown = { name, run, start: run.start, end: Math.max(run.end, run.start), t: run.start, done: 0, bins: null, balls: [] };
+    Object.assign(game, { target: 0, now: 0, events: 0, stopped: "", pending: [], inputs: [], start: 0, branch: null,
+                          parent: { name, bytes } });
+    game.held.clear();
+    game.names = [];
+    ui.logStatus.textContent = "Opened " + name + ": " + (run.first + run.count) + " events to t = " +
+      shown.end.toFixed(2) + " s" + (opened.branch ? ", a branch log" : "") + (opened.complete ? "" : " (" + run.truncation + ")") +
+      ". Scrub its timeline, then play from any moment.";
+    ui.logStatus.className = "good";
+    ui.status.textContent = "";
+    describe();
+    showMode();
+    layout();
+    seekShown(shown.start);
+    return true;
+  }
+  async function openLogFile(file) {
+    if (file) openLogBytes(new Uint8Array(await file.arrayBuffer()), file.name);
+  }
+  function seekShown(t) {
+    shown.t = Math.min(shown.end, Math.max(shown.start, t));
+    shown.done = RunData.eventsBy(shown.run, shown.t);
+    draw();
+  }
+  function drawShown() {
+    const run = shown.run, t = shown.t, done = shown.done;
+    const ctx = BoardView.beginBoard(view, board);
+    board.gizmos.forEach((g, i) => BoardView.drawGizmo(ctx, g, RunData.flipperSwing(run, i + 1, t, done)));
+    shown.balls = [];
+    run.balls.forEach((ball, b) => {
+      const at = RunData.ballAt(run, ball, t, done);
+      if (!at) return;
+      BoardView.drawBall(ctx, board, at, b, null);
+      shown.balls.push({ name: ball.name, x: at.x, y: at.y, vx: at.vx, vy: at.vy });
+    });
+    BoardView.endBoard(view);
+    const w = ui.timeline.clientWidth, h = ui.timeline.clientHeight;
+    if (view.timeline && w > 0) {
+      if (!shown.bins || shown.bins.length !== w * 3) shown.bins = TimelineView.bins(run, shown.end, w);
+      TimelineView.draw(view.timeline, w, h, shown.bins, shown.end, t, []);
+    }
+    ui.scrub.value = String(Math.round(t / shown.end * 100000));
+    ui.clock.textContent = "t = " + t.toFixed(4) + " s\n" + (run.first + done) + " / " + (run.first + run.count) +
+      " events\n" + shown.name;
+  }
+  // The game goes on from the moment shown (rounded down to a tick end) as a branch of the log.
+  function takeOver() {
+    if (!shown) return false;
+    if (!game.api.takeOver(shown.t, 0)) {
+      ui.status.textContent = "Cannot play from here: " + game.api.text();
+      return false;
+    }
+    const name = shown.name;
+    shown = null;
+    startBranch(name);
+    return true;
+  }
+  // Five seconds back (to the game's start at the earliest): the game so far is written as a log
+  // and taken over there; that log is kept, to be saved as the branch's parent.
+  async function rewind(seconds) {
+    if (shown || game.busy) return false;
+    return busy(async () => {
+      const log = await writeLog();
+      if (!log) return false;
+      const bytes = new Uint8Array(await log.blob.arrayBuffer());
+      handIn(bytes);
+      if (!game.api.takeOver(Math.max(game.start, log.time - seconds), 1)) {
+        ui.status.textContent = "Cannot rewind: " + game.api.text();
+        return false;
+      }
+      const name = logName(game.branch ? "-branch" : "");
+      game.parent = { name, bytes };
+      startBranch(name, log.time);
+      return true;
+    });
+  }
+  // The game goes on as the branch the module took (of a log opened, or, rewinding, of the game
+  // itself as it was at board time `from`).
+  function startBranch(parentName, from) {
+    store = newStore();
+    const now = game.api.now();
+    Object.assign(game, { target: now, now, stopped: "", pending: [], inputs: [], start: game.api.startTime(),
+                          branch: { parent: parentName, at: now, event: game.api.branchEvent(), from } });
+    game.events = game.api.events();
+    game.names = [];
+    ui.status.textContent = "";
+    showMode();
+    layout();
+    readBoard();
+    describe();
+  }
+  function showMode() {
+    ui.logView.hidden = !shown;
+    ui.takeOver.disabled = !shown;
+    ui.rewind.disabled = !!shown;
+    ui.check.disabled = ui.save.disabled = !!shown;
+    ui.saveParent.disabled = !game.parent || !game.branch;
+    ui.branch.textContent = game.branch ? "A branch of " + game.branch.parent + ": taken over at t = " +
+      game.branch.at.toFixed(2) + " s, after its event " + game.branch.event + "." : "";
+  }
+
   // ---- The log ----------------------------------------------------------------------------------
   function two(n) { return String(n).padStart(2, "0"); }
-  function logName() {
+  function logName(kind) {
     const d = new Date();  // the file's name only: nothing of the game depends on the clock
-    const stem = data.title.replace(/ \(.*\)$/, "").replace(/\.[A-Za-z]+$/, "").replace(/[^A-Za-z0-9_-]+/g, "-") || "game";
-    return stem + "-" + d.getFullYear() + two(d.getMonth() + 1) + two(d.getDate()) + "-" +
+    const stem = data.title.replace(/ \(.*\)$/, "").replace(/\.[A-Za-z]+$/, "").replace(/-\d{8}-\d{6}$/, "")
+      .replace(/[^A-Za-z0-9_-]+/g, "-") || "game";
+    return stem + (kind || "") + "-" + d.getFullYear() + two(d.getMonth() + 1) + two(d.getDate()) + "-" +
       two(d.getHours()) + two(d.getMinutes()) + two(d.getSeconds()) + ".gzlog";
   }
-  // Writes the game so far as a log (in the module's memory) and copies it out: its bytes, or null.
-  function writeLog() {
+  // The bytes of a log handed to the module (gp_buffer), to open, take over or check.
+  function handIn(bytes) {
+    const at = game.api.buffer(bytes.length);
+    game.module.HEAPU8.set(bytes, at);
+  }
+  // While the page writes, joins and hands over a log (which waits for the browser's streams),
+  // the game stands still, so that the log and the game stay one.
+  async function busy(work) {
+    game.busy = true;
+    try {
+      return await work();
+    } finally {
+      game.busy = false;
+    }
+  }
+  // Writes the game so far as a log: the module writes its header, the chunks it still holds and
+  // the end, and the page puts the chunks it took into their place. The log as a Blob, or null.
+  async function writeLog() {
     const start = performance.now();
     const size = game.api.save();
     if (size < 0) {
@@ -194,37 +391,91 @@
     }
     const at = game.api.saved();
     const bytes = game.module.HEAPU8.slice(at, at + size);
-    const ms = performance.now() - start;
-    return { bytes, ms, note: game.api.text() };
-  }
-  function save() {
-    const log = writeLog();
+    const split = game.api.saveSplit();
+    const note = game.api.text();
+    const time = game.now;
     game.api.forgetSaved();
-    if (!log) return null;
-    const name = logName();
+    const parts = split < 0 ? [bytes] : [bytes.subarray(0, split), ...storedChunks(store), bytes.subarray(split)];
+    const blob = new Blob(parts, { type: "application/octet-stream" });
+    return { blob, size: blob.size, time, ms: performance.now() - start, note };
+  }
+  function download(blob, name) {
     const link = document.createElement("a");
-    link.href = URL.createObjectURL(new Blob([log.bytes], { type: "application/octet-stream" }));
+    link.href = URL.createObjectURL(blob);
     link.download = name;
     document.body.appendChild(link);
     link.click();
     link.remove();
     setTimeout(() => URL.revokeObjectURL(link.href), 60000);
-    ui.logStatus.textContent = "Saved " + name + ": " + log.bytes.length + " bytes, the game from 0 to " +
-      game.now.toFixed(2) + " s, written in " + log.ms.toFixed(0) + " ms." + (log.note ? " " + log.note : "");
-    ui.logStatus.className = "good";
-    return { name, size: log.bytes.length, time: game.now, ms: log.ms };
   }
-  function check() {
-    const size = game.api.save();
-    let result = -1, text = game.api.text();
-    if (size >= 0) {
-      result = game.api.check();
-      text = game.api.text();
+  async function save() {
+    if (game.busy) return null;
+    return busy(async () => {
+      const log = await writeLog();
+      if (!log) return null;
+      const name = logName(game.branch ? "-branch" : "");
+      download(log.blob, name);
+      ui.logStatus.textContent = "Saved " + name + ": " + log.size + " bytes, the game from " + game.start.toFixed(2) +
+        " to " + log.time.toFixed(2) + " s" + (game.branch ? " (a branch of " + game.branch.parent + ")" : "") +
+        ", written in " + log.ms.toFixed(0) + " ms." + (log.note ? " " + log.note : "");
+      ui.logStatus.className = "good";
+      return { name, size: log.size, time: log.time, ms: log.ms };
+    });
+  }
+  function saveParent() {
+    if (!game.parent) return null;
+    download(new Blob([game.parent.bytes], { type: "application/octet-stream" }), game.parent.name);
+    ui.logStatus.textContent = "Saved " + game.parent.name + ", the log taken over: " + game.parent.bytes.length + " bytes.";
+    ui.logStatus.className = "good";
+    return { name: game.parent.name, size: game.parent.bytes.length };
+  }
+  async function check() {
+    if (game.busy) return null;
+    return busy(async () => {
+      ui.logStatus.textContent = "Checking…";
+      ui.logStatus.className = "";
+      const log = await writeLog();
+      let result = -1, text = log ? "" : game.api.text();
+      if (log) {
+        handIn(new Uint8Array(await log.blob.arrayBuffer()));
+        result = game.api.check(1);
+        text = game.api.text();
+        game.api.buffer(0);
+      }
+      ui.logStatus.textContent = "Check at t = " + game.now.toFixed(2) + " s: " + text;
+      ui.logStatus.className = result === 1 ? "good" : "bad";
+      return { identical: result === 1, text };
+    });
+  }
+
+  // ---- The recording's closed chunks ------------------------------------------------------------
+  // The module hands the page each chunk its Recorder closes (gp_take_chunks, at every frame) and
+  // keeps only its place in the log's index. The page keeps them as Blobs, which the browser holds
+  // in its own storage (on disk when large), out of the module's memory, so that the module's
+  // memory stays bounded however long the game. A log written joins them back, in order. (They are
+  // not compressed: gzip makes these records, mostly doubles, a fifth smaller, and at 64× the
+  // browser's CompressionStream took longer than the game itself: docs/play.md, "Memory".)
+  function newStore() { return { parts: [], bytes: 0, moduleMost: 0 }; }
+  let store = newStore();
+  function takeChunks() {
+    const size = game.api.takeChunks();
+    if (size) {
+      const at = game.api.taken();
+      store.parts.push(new Blob([game.module.HEAPU8.subarray(at, at + size)]));  // a copy
+      store.bytes += size;
+      game.api.forgetTaken();
     }
-    game.api.forgetSaved();
-    ui.logStatus.textContent = "Check at t = " + game.now.toFixed(2) + " s: " + text;
-    ui.logStatus.className = result === 1 ? "good" : "bad";
-    return { identical: result === 1, text };
+    store.moduleMost = Math.max(store.moduleMost, game.api.heldBytes());
+  }
+  // The chunks the page holds, in the order the module handed them over.
+  function storedChunks(s) { return s.parts.slice(); }
+  // What the game's recording holds: in the module (the chunks not yet handed over, the index,
+  // the last log written, at most that after any frame) and in the page's Blobs.
+  function held() {
+    const module = game.api.heldBytes();
+    return { module, module_most: store.moduleMost, page: store.bytes, parts: store.parts.length,
+             module_per_event: game.events > 0 ? module / game.events : 0,
+             page_per_event: game.events > 0 ? store.bytes / game.events : 0 };
   }
 
   // ---- What the tests read --------------------------------------------------------------------
@@ -233,8 +484,11 @@
     const hex = BoardView.hexFloat;
     return {
       time: hex(game.now), time_value: game.now, target: game.target, events: game.events, paused: game.paused,
-      stopped: game.stopped, pending: game.pending.length,
-      inputs: game.inputs.map((k) => ({ code: k.code, up: k.up, time: hex(k.time), time_value: k.time, trusted: k.trusted })),
+      stopped: game.stopped, pending: game.pending.length, start: hex(game.start), branch: game.branch, busy: game.busy,
+      held: held(),
+      inputs: game.inputs.map((k) => ({ code: k.code, up: k.up, time: hex(k.time), time_value: k.time, trusted: k.trusted, source: k.source })),
+      shown: shown && { name: shown.name, time: hex(shown.t), time_value: shown.t, events: shown.run.first + shown.done,
+                        balls: shown.balls.map((b) => ({ name: b.name, x: hex(b.x), y: hex(b.y), vx: hex(b.vx), vy: hex(b.vy) })) },
       balls: game.balls.map((b, i) => ({ name: game.names[i], x: hex(b.x), y: hex(b.y), vx: hex(b.vx), vy: hex(b.vy) })),
     };
   }
@@ -278,10 +532,11 @@
 
   // ---- Start ------------------------------------------------------------------------------------
   function describe() {
-    document.getElementById("title").textContent = data.title;
+    document.getElementById("title").textContent = data.title + (game.branch ? " (a branch)" : "");
     document.getElementById("summary").textContent = data.model + " model, double, ticks of " + data.max_tick +
       " s · " + board.gizmos.length + " gizmos" + (game.names.length ? ", " + game.names.length + " balls" : "");
     document.getElementById("warnings").textContent = data.board_warnings.join("  ");
+    showTouchKeys();
     showKeys();
   }
   describe();
@@ -304,7 +559,18 @@
       save: m.cwrap("gp_save", "number", []),
       saved: m.cwrap("gp_saved", "number", []),
       forgetSaved: m.cwrap("gp_forget_saved", null, []),
-      check: m.cwrap("gp_check", "number", []),
+      check: m.cwrap("gp_check", "number", ["number"]),
+      saveSplit: m.cwrap("gp_save_split", "number", []),
+      takeChunks: m.cwrap("gp_take_chunks", "number", []),
+      taken: m.cwrap("gp_taken", "number", []),
+      forgetTaken: m.cwrap("gp_forget_taken", null, []),
+      heldBytes: m.cwrap("gp_held_bytes", "number", []),
+      buffer: m.cwrap("gp_buffer", "number", ["number"]),
+      openLog: m.cwrap("gp_open_log", "number", ["string"]),
+      takeOver: m.cwrap("gp_take_over", "number", ["number", "number"]),
+      now: m.cwrap("gp_now", "number", []),
+      startTime: m.cwrap("gp_start_time", "number", []),
+      branchEvent: m.cwrap("gp_branch_event", "number", []),
     };
     if (!game.api.load(data.board_text, data.title, data.board_warnings.join("\n"), data.model === "classic" ? 0 : 1,
                        data.max_tick, 1)) {
@@ -316,15 +582,42 @@
     const plan = benchPlan(window.location.hash);
     if (plan)
       game.bench = { ...plan, best: new Array(plan.frames).fill(Infinity), frame: 0, round: 0, rawWorst: 0, rawWorstFrame: 0, done: false, result: null };
-    for (const b of [ui.pause, ui.restart, ui.save, ui.check]) b.disabled = false;
+    for (const b of [ui.pause, ui.restart, ui.save, ui.check, ui.openLog]) b.disabled = false;
+    showMode();
     // A clicked button keeps no focus, so that space (a board key) never presses it.
-    for (const b of [ui.pause, ui.restart, ui.save, ui.check, ui.speed]) b.addEventListener("click", () => b.blur());
+    for (const b of [ui.pause, ui.restart, ui.save, ui.check, ui.speed, ui.takeOver, ui.rewind, ui.saveParent])
+      b.addEventListener("click", () => b.blur());
     ui.speed.addEventListener("change", () => ui.speed.blur());
     ui.pause.addEventListener("click", () => setPaused(!game.paused));
     ui.restart.addEventListener("click", restart);
     ui.save.addEventListener("click", save);
     ui.check.addEventListener("click", check);
-    window.gizmoPlay = { probe, save, check, restart, setPaused, ready: true, bench: () => game.bench && game.bench.done && game.bench.result };
+    ui.takeOver.addEventListener("click", takeOver);
+    ui.rewind.addEventListener("click", () => rewind(5));
+    ui.saveParent.addEventListener("click", saveParent);
+    ui.openLog.addEventListener("change", () => {
+      openLogFile(ui.openLog.files[0]);
+      ui.openLog.blur();
+    });
+    // A log file dropped anywhere on the page opens like one chosen with the button.
+    window.addEventListener("dragover", (ev) => ev.preventDefault());
+    window.addEventListener("drop", (ev) => {
+      ev.preventDefault();
+      if (ev.dataTransfer && ev.dataTransfer.files.length) openLogFile(ev.dataTransfer.files[0]);
+    });
+    // Scrubbing a log shown: its timeline (pressed and dragged) and the slider, as in the player.
+    let dragging = false;
+    ui.timeline.addEventListener("pointerdown", (ev) => {
+      if (!shown) return;
+      dragging = true;
+      seekShown(TimelineView.timeAt(ui.timeline, ev, shown.end));
+    });
+    window.addEventListener("pointermove", (ev) => { if (dragging && shown) seekShown(TimelineView.timeAt(ui.timeline, ev, shown.end)); });
+    window.addEventListener("pointerup", () => { dragging = false; });
+    ui.scrub.addEventListener("input", () => { if (shown) seekShown(Number(ui.scrub.value) / 100000 * shown.end); });
+    const pauseAt = (t) => { game.pauseAt = t; };
+    window.gizmoPlay = { probe, save, saveParent, check, restart, setPaused, pauseAt, takeOver, rewind, ready: true,
+                         bench: () => game.bench && game.bench.done && game.bench.result };
     readBoard();
     requestAnimationFrame(frame);
   }).catch((e) => {

@@ -51,11 +51,9 @@
   function esc(s) { return String(s).replace(/&/g, "&amp;").replace(/</g, "&lt;").replace(/>/g, "&gt;"); }
 
   // ---- Colours --------------------------------------------------------------------------------
-  const KIND_COLOUR = ["#ff5a5a", "#c77dff", "#4dd0e1", "#ffb74d", "#5a6577", "#81c784", "#6f7d94", "#3b4454"];
-  const KIND_LANE = [0, 1, 1, 1, 2, 1, 2, 2];  // collisions, other notable events, routine events
+  const { KIND_COLOUR, KIND_LANE, PARTING_COLOUR } = TimelineView;  // timeline_view.js, shared with the play page
   const SECOND_RUN = "#ff8c42";
   const PATH_COLOUR = "#40c4ff";
-  const PARTING_COLOUR = "#ff3b3b";
 
   // ---- The player's state ---------------------------------------------------------------------
   const ui = {
@@ -242,53 +240,13 @@
   }
 
   // ---- The timelines --------------------------------------------------------------------------
-  // The whole run: one column per pixel and three lanes (collisions; other notable events;
-  // friction ticks, recalculations and ends of tick). A column shows a lane's mark when any
-  // event of that lane falls in it, so every event is marked however many there are.
-  function timelineBins(width) {
-    const bins = new Uint16Array(width * 3);  // per column and lane: 1 + the first kind seen
-    for (let k = 0; k < main.count; k++) {
-      const kind = main.kind[k];
-      const col = Math.min(width - 1, Math.floor(main.time[k] / endTime * width));
-      const slot = col * 3 + KIND_LANE[kind];
-      if (!bins[slot] || kind === 0) bins[slot] = kind + 1;
-    }
-    return bins;
-  }
-  function laneY(lane, height) { return 4 + lane * (height - 8) / 3; }
-
+  // The whole run (timeline_view.js), then the moments around the current time.
   function drawTimeline() {
-    const ctx = view.timeline, w = ui.timeline.clientWidth, h = ui.timeline.clientHeight;
-    if (!view.bins || view.bins.length !== w * 3) view.bins = timelineBins(w);
-    ctx.clearRect(0, 0, w, h);
-    ctx.fillStyle = "#151b24";
-    ctx.fillRect(0, 0, w, h);
-    const laneH = (h - 8) / 3 - 2;
-    for (let col = 0; col < w; col++)
-      for (let lane = 0; lane < 3; lane++) {
-        const kind = view.bins[col * 3 + lane] - 1;
-        if (kind < 0) continue;
-        ctx.fillStyle = KIND_COLOUR[kind];
-        ctx.fillRect(col, laneY(lane, h), 1, laneH);
-      }
-    markParting(ctx, (t) => t / endTime * w, h);
-    ctx.fillStyle = "#ffffff";
-    ctx.fillRect(Math.round(state.t / endTime * w) - 1, 0, 2, h);
+    const w = ui.timeline.clientWidth, h = ui.timeline.clientHeight;
+    if (!view.bins || view.bins.length !== w * 3) view.bins = TimelineView.bins(main, endTime, w);
+    TimelineView.draw(view.timeline, w, h, view.bins, endTime, state.t, partings);
   }
-
-  function markParting(ctx, x, h) {
-    if (!partings.length) return;
-    ctx.strokeStyle = PARTING_COLOUR;
-    ctx.setLineDash([4, 3]);
-    ctx.lineWidth = 2;
-    ctx.beginPath();
-    for (const t of partings) {
-      ctx.moveTo(x(t), 0);
-      ctx.lineTo(x(t), h);
-    }
-    ctx.stroke();
-    ctx.setLineDash([]);
-  }
+  function markParting(ctx, x, h) { TimelineView.markParting(ctx, x, h, partings); }
 
   // The moments around the current time: each event its own tick, the selected one outlined.
   const MAX_TICKS = 5000;
@@ -449,10 +407,7 @@
   }
 
   // ---- Input ----------------------------------------------------------------------------------
-  function timeFromTimeline(ev) {
-    const rect = ui.timeline.getBoundingClientRect();
-    return (ev.clientX - rect.left) / rect.width * endTime;
-  }
+  function timeFromTimeline(ev) { return TimelineView.timeAt(ui.timeline, ev, endTime); }
   let dragging = false;
   ui.timeline.addEventListener("pointerdown", (ev) => { dragging = true; pause(); seekTime(timeFromTimeline(ev)); });
   window.addEventListener("pointermove", (ev) => { if (dragging) seekTime(timeFromTimeline(ev)); });

@@ -1,4 +1,5 @@
-// A run taken over at a moment of a log, recorded as a branch log (replay.hpp: recordBranch).
+// A run taken over at a moment of a log (branch_start.hpp: startBranch, which the game page's play
+// module shares), recorded as a branch log (replay.hpp: recordBranch).
 //
 // The board queues a tick's keys when the tick starts, so a run can only be resumed at a tick
 // boundary. A branch therefore starts from the parent's state at the last tick boundary at or
@@ -8,12 +9,14 @@
 #include <algorithm>
 
 #include "run_start.hpp"
+#include "gizmo/replay/branch_start.hpp"
 #include "gizmo/replay/recorder.hpp"
 
 namespace gizmo::replay {
-namespace {
 
 using namespace detail;
+
+namespace {
 
 // Keeps the state of the parent's run at each tick boundary on the way to the branch point.
 template <class Real>
@@ -111,6 +114,34 @@ std::string eventText(std::uint64_t n) { return "event " + std::to_string(n); }
 
 template <class Real>
 BranchResult branchAs(const OpenedLog& parent, const BranchRequest& request, ChunkSink& sink) {
+  const BranchStart<Real> start = startBranch<Real>(parent, request);
+  BranchResult result;
+  result.origin = start.origin;
+  result.time = start.time;
+  result.startEvents = start.board->executedTotal();
+  result.keysLeftOut = start.keysLeftOut;
+
+  GameBoard<Real>& board = *start.board;
+  sink.branchHeader(headerBytes(start.run, parent.precision, board, parent.header.boardWarnings, result.origin));
+  Recorder<Real> recorder(sink, board, typename Recorder<Real>::Start{start.ticksDone, start.decisionsDone});
+  board.setObserver(&recorder);
+  try {
+    continueRun(board, start.run, std::int64_t(start.ticksDone));
+  } catch (const StallError& e) {
+    result.record.completed = false;
+    result.record.error = e.what();
+  }
+  recorder.finish(result.record.completed, result.record.error);
+  result.record.summary = summarize(board);
+  return result;
+}
+
+}  // namespace
+
+template <class Real>
+BranchStart<Real> startBranch(const OpenedLog& parent, const BranchRequest& request) {
+  if (scalarName<Real>() != parent.header.scalar)
+    throw BranchError("the log was made with " + parent.header.scalar + ", a branch here computes " + scalarName<Real>());
   const std::optional<RunEnd>& end = parent.reader.end();
   if (!end) throw BranchError(parent.reader.truncation() + ": a branch is taken from a whole log");
   if (request.at.events && *request.at.events > end->events)
@@ -147,9 +178,10 @@ BranchResult branchAs(const OpenedLog& parent, const BranchRequest& request, Chu
     throw BranchError("the branch would end at " + std::to_string(branch.duration) + " s, before its branch point at " +
                       std::to_string(toDouble(atPoint.now)) + " s");
 
-  auto startingBoard = [&] {
+  const BoardState<Real>& boundary = *watch.state;
+  auto startingBoard = [&branch, &boundary] {
     std::unique_ptr<GameBoard<Real>> board = prepareRun<Real>(branch);
-    board->restoreState(*watch.state);
+    board->restoreState(boundary);
     return board;
   };
   // The branch's keys at the point's very time run in the instant's order, which may put one
@@ -168,28 +200,18 @@ BranchResult branchAs(const OpenedLog& parent, const BranchRequest& request, Chu
   }
 
   const std::uint64_t decisionsDone = decisionsBefore(parent, seek.chunk, watch.ticksDone, watch.state->executedTotal);
-  BranchResult result;
-  result.origin = BranchOrigin{parent.reader.fileDigest(), atPoint.executedTotal};
-  result.time = exact(atPoint.now);
-  result.startEvents = watch.state->executedTotal;
-  result.keysLeftOut = request.keys.size() - later.size();
-
-  std::unique_ptr<GameBoard<Real>> board = startingBoard();
-  sink.branchHeader(headerBytes(branch, parent.precision, *board, parent.header.boardWarnings, result.origin));
-  Recorder<Real> recorder(sink, *board, typename Recorder<Real>::Start{watch.ticksDone, decisionsDone});
-  board->setObserver(&recorder);
-  try {
-    continueRun(*board, branch, std::int64_t(watch.ticksDone));
-  } catch (const StallError& e) {
-    result.record.completed = false;
-    result.record.error = e.what();
-  }
-  recorder.finish(result.record.completed, result.record.error);
-  result.record.summary = summarize(*board);
-  return result;
+  BranchStart<Real> start;
+  start.origin = BranchOrigin{parent.reader.fileDigest(), atPoint.executedTotal};
+  start.time = exact(atPoint.now);
+  start.keysLeftOut = request.keys.size() - later.size();
+  start.ticksDone = watch.ticksDone;
+  start.decisionsDone = decisionsDone;
+  start.board = startingBoard();
+  start.run = std::move(branch);
+  return start;
 }
 
-}  // namespace
+template BranchStart<double> startBranch<double>(const OpenedLog&, const BranchRequest&);
 
 BranchResult recordBranch(const OpenedLog& parent, const BranchRequest& request, ChunkSink& sink) {
   return withLogScalar(parent, [&]<class Real>() { return branchAs<Real>(parent, request, sink); });

@@ -149,15 +149,33 @@ LogWriter::~LogWriter() {
   if (file_) std::fclose(file_);  // unfinished: no index, read as cut off
 }
 
-void LogWriter::frame(std::uint8_t type, std::span<const std::uint8_t> payload) {
-  if (!open_) throw std::logic_error("log already finished");
+namespace {
+
+// What comes before and after a frame's payload: its type and length, and its checksum.
+void frameParts(std::uint8_t type, std::span<const std::uint8_t> payload, ByteWriter& head, ByteWriter& tail,
+                const std::string& what) {
+  if (payload.size() > kMaxFramePayload) throw std::runtime_error(what + ": a chunk too large for the log format");
   const auto length = static_cast<std::uint32_t>(payload.size());
-  if (payload.size() > kMaxFramePayload) throw std::runtime_error(path_ + ": a chunk too large for the log format");
-  ByteWriter head;
   head.u8(type);
   head.u32(length);
-  ByteWriter tail;
   tail.u64(frameChecksum(type, length, payload));
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> chunkFrame(std::span<const std::uint8_t> payload) {
+  ByteWriter head, tail;
+  frameParts(std::uint8_t(FrameType::Chunk), payload, head, tail, "chunkFrame");
+  std::vector<std::uint8_t> out(head.bytes().begin(), head.bytes().end());
+  out.insert(out.end(), payload.begin(), payload.end());
+  out.insert(out.end(), tail.bytes().begin(), tail.bytes().end());
+  return out;
+}
+
+void LogWriter::frame(std::uint8_t type, std::span<const std::uint8_t> payload) {
+  if (!open_) throw std::logic_error("log already finished");
+  ByteWriter head, tail;
+  frameParts(type, payload, head, tail, path_);
   const bool ok = put(head.bytes()) && put(payload) && put(tail.bytes()) && (memory_ || std::fflush(file_) == 0);
   if (!ok) throw std::runtime_error(path_ + ": write failed: " + std::strerror(errno));
   offset_ += head.size() + payload.size() + tail.size();
@@ -177,6 +195,14 @@ void LogWriter::chunk(std::span<const std::uint8_t> payload, const ChunkEntry& e
   ChunkEntry e = entry;
   e.offset = offset_;
   frame(std::uint8_t(FrameType::Chunk), payload);
+  index_.push_back(e);
+}
+
+void LogWriter::chunkElsewhere(const ChunkEntry& entry, std::uint64_t frameBytes) {
+  if (!open_) throw std::logic_error("log already finished");
+  ChunkEntry e = entry;
+  e.offset = offset_;
+  offset_ += frameBytes;
   index_.push_back(e);
 }
 

@@ -35,10 +35,12 @@ RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precisi
 }
 
 std::vector<std::uint8_t> recordHeader(const RunRequest& request, const PrecisionChoice& precision,
-                                       const std::vector<std::string>& boardWarnings) {
+                                       const std::vector<std::string>& boardWarnings,
+                                       const std::optional<BranchOrigin>& parent) {
   // The parameters as the board holds them (the board's file sets gravity and friction).
   return withRecordablePrecision(precision, [&]<class Real>() {
-    return detail::headerBytes(request, precision, *buildBoard<Real>(request.board, paramsFor<Real>(request)), boardWarnings);
+    return detail::headerBytes(request, precision, *buildBoard<Real>(request.board, paramsFor<Real>(request)), boardWarnings,
+                                parent);
   });
 }
 

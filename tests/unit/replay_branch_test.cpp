@@ -5,7 +5,7 @@
 //     at an end of tick, with a key held, with a flipper mid-swing, with a spawned ball, at a
 //     keyframe and between keyframes;
 //   - a branch log replays identically, seeks, walks and compares with its parent on its own,
-//     and so does a branch of a branch;
+//     and so does a branch of a branch; a parent recorded at MPFR precision too;
 //   - other key input parts from the parent only after the branch point's tick starts;
 //   - a point beyond the log, a cut-off parent, a branch ending before its point, a diff against
 //     a log that is not the parent: refused, with nothing written.
@@ -92,6 +92,11 @@ std::vector<ParentCase> parentCases() {
   }
   for (const MotionModel m : {MotionModel::Ballistic, MotionModel::Classic})
     cases.push_back(ParentCase{"boards/gizmos/spawner.txt", m, "double", 3, true});
+#ifndef GIZMO_PORTABLE
+  // A parent recorded at MPFR precision (a scalar whose exact encoding is longer than its
+  // hardware floats'; the golden list has none): the branch keeps its scalar.
+  cases.push_back(ParentCase{"boards/spec-example.txt", MotionModel::Ballistic, "mpfr:128", 2, true});
+#endif
   return cases;
 }
 

@@ -97,9 +97,42 @@ export class Browser {
     });
   }
   async click(selector) {
+    return this.command("POST", `/element/${await this.element(selector)}/click`, {});
+  }
+  async element(selector) {
     const element = await this.command("POST", "/element", { using: "css selector", value: selector });
-    const id = Object.values(element)[0];
-    return this.command("POST", `/element/${id}/click`, {});
+    return Object.values(element)[0];
+  }
+  // Chooses a file in an <input type="file">, as a person picking it in the file dialog would.
+  async chooseFile(selector, file) {
+    const id = await this.element(selector);
+    return this.command("POST", `/element/${id}/value`, { text: file });
+  }
+  // Where on the page (viewport pixels) a fraction across the element's width is, halfway down.
+  async pointAcross(selector, fraction) {
+    const rect = await this.command("GET", `/element/${await this.element(selector)}/rect`);
+    return { x: Math.round(rect.x + fraction * rect.width), y: Math.round(rect.y + rect.height / 2) };
+  }
+  // A mouse press and release at a fraction of the element's width (0 its left edge, 1 its right),
+  // halfway down: a click on a timeline.
+  async clickAcross(selector, fraction) {
+    const { x, y } = await this.pointAcross(selector, fraction);
+    return this.command("POST", "/actions", {
+      actions: [{ type: "pointer", id: "mouse", parameters: { pointerType: "mouse" }, actions: [
+        { type: "pointerMove", duration: 0, origin: "viewport", x, y },
+        { type: "pointerDown", button: 0 }, { type: "pointerUp", button: 0 }] }],
+    });
+  }
+  // A finger put on the element's centre, held for holdMs and lifted: the browser sends touch
+  // and pointer events (pointerType "touch"), marked trusted. (One action sequence: chromedriver
+  // does not lift a finger put down by an earlier one.)
+  async touch(selector, holdMs) {
+    const { x, y } = await this.pointAcross(selector, 0.5);
+    return this.command("POST", "/actions", {
+      actions: [{ type: "pointer", id: "finger", parameters: { pointerType: "touch" }, actions: [
+        { type: "pointerMove", duration: 0, origin: "viewport", x, y }, { type: "pointerDown", button: 0 },
+        { type: "pause", duration: holdMs }, { type: "pointerUp", button: 0 }] }],
+    });
   }
   async screenshot(file) {
     fs.writeFileSync(file, Buffer.from(await this.command("GET", "/screenshot"), "base64"));

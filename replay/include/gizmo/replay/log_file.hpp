@@ -72,6 +72,10 @@ class LogWriter final : public ChunkSink {
   void branchHeader(std::span<const std::uint8_t> payload) override;
   void chunk(std::span<const std::uint8_t> payload, const ChunkEntry& entry) override;
   void finish(const RunEnd& end) override;
+  // A chunk whose frame (chunkFrame's bytes) the caller puts into the log at this place itself:
+  // the writer counts its bytes and indexes it, and writes nothing (the game page keeps closed
+  // chunks out of the module's memory and joins them to the log it saves).
+  void chunkElsewhere(const ChunkEntry& entry, std::uint64_t frameBytes);
   std::uint64_t bytesWritten() const { return offset_; }
   std::uint64_t chunksWritten() const { return index_.size(); }
 
@@ -86,6 +90,9 @@ class LogWriter final : public ChunkSink {
   std::uint64_t offset_ = 0;
   std::vector<ChunkEntry> index_;
 };
+
+// A chunk's frame as LogWriter writes it: its type and length, the payload, its checksum.
+std::vector<std::uint8_t> chunkFrame(std::span<const std::uint8_t> payload);
 
 // The bytes of a log, from a file or from memory.
 class ByteSource {
