@@ -215,6 +215,7 @@ void printRunsJson(const CheckedRun& run, const CrosscheckCommandOptions& o, con
                  {"energy_end", r.ourEnergyEnd}};
   out["steps"] = steps;
   if (!o.pathOut.empty()) out["path_out"] = o.pathOut;
+  if (!o.traceOut.empty()) out["trace_out"] = o.traceOut;
   std::cout << out.dump(2) << '\n';
 }
 
@@ -228,6 +229,9 @@ void printRunsText(const CheckedRun& run, const CrosscheckCommandOptions& o, con
   if (!o.pathOut.empty())
     std::printf("path       %s: Box2D's ball centres after every step (gizmo render LOG -o run.html --compare %s)\n",
                 o.pathOut.c_str(), o.pathOut.c_str());
+  if (!o.traceOut.empty())
+    std::printf("trace out  %s: the v3 program's own run, as a trace (gizmo crosscheck BOARD --trace %s)\n",
+                o.traceOut.c_str(), o.traceOut.c_str());
   std::printf("\n%-10s %7s %6s %7s %8s %8s %10s %10s %9s %6s %7s %9s %9s %9s %8s\n", "dt", "steps", "engine", "matched",
               "missed", "missed", "max dt", "mean dt", "max dpos", "in-toi", "capped", "div>0.1", "max div", "dE/E",
               "wall s");
@@ -312,8 +316,9 @@ bool writePath(const CheckedRun& run, const CrosscheckCommandOptions& o, const v
   return true;
 }
 
-// --engine box2d-v3: the scene run by the node program at each step size, each run read back as
-// a trace and compared as a trace is.
+// --engine box2d-v3: the scene run by the node program at each step size, stepped by the driver
+// and compared as a trace is; with --trace-out (one step size), the program also writes its run
+// as a trace, whole before the report is printed.
 int box2d3Command(const CheckedRun& run, const CrosscheckCommandOptions& o, const verify::CrosscheckOptions& options) {
   if (const std::optional<std::string> why = verify::box2d3CannotModel(run.request.board)) {
     std::cerr << "gizmo crosscheck: " << *why << '\n';
@@ -333,7 +338,7 @@ int box2d3Command(const CheckedRun& run, const CrosscheckCommandOptions& o, cons
     for (double dt : options.steps) {
       verify::Box2dOptions b = options.box2d;
       b.dt = dt;
-      verify::EngineTrace trace = verify::runBox2d3(longer, b);
+      verify::EngineTrace trace = verify::runBox2d3(longer, b, o.traceOut);
       trace.run.dt = dt;
       name = trace.engine;
       runs.push_back(std::move(trace.run));
@@ -407,6 +412,14 @@ int crosscheckCommand(const CrosscheckCommandOptions& o) {
     std::cerr << "gizmo crosscheck: --path-out writes Box2D 2.4's path: use --engine box2d-2.4\n";
     return kExitBadInput;
   }
+  if (!o.traceOut.empty() && !o.trace.empty()) {
+    std::cerr << "gizmo crosscheck: --trace-out writes Box2D v3's run as a trace and --trace reads one: give one of them\n";
+    return kExitBadInput;
+  }
+  if (!o.traceOut.empty() && o.engine != "box2d-v3") {
+    std::cerr << "gizmo crosscheck: --trace-out is written by the Box2D v3 program: use --engine box2d-v3\n";
+    return kExitBadInput;
+  }
   if (o.toiSweeps > 0) return toiSurveyCommand(o);
   if (!o.trace.empty()) return traceCommand(o);
   CheckedRun run;
@@ -423,6 +436,10 @@ int crosscheckCommand(const CrosscheckCommandOptions& o) {
   options.box2d.bullet = !o.noBullet;
   options.box2d.continuous = !o.noContinuous;
   options.box2d.restitutionThreshold = o.restitutionThreshold;
+  if (!o.traceOut.empty() && options.steps.size() != 1) {
+    std::cerr << "gizmo crosscheck: --trace-out writes the run of one step size: give --dt one (for example --dt 1/240)\n";
+    return kExitBadInput;
+  }
   if (o.engine == "box2d-v3") return box2d3Command(run, o, options);
   if (!o.pathOut.empty() && options.steps.size() != 1) {
     std::cerr << "gizmo crosscheck: --path-out writes the path of one step size: give --dt one (for example --dt 1/240)\n";

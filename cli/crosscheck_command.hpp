@@ -22,6 +22,7 @@ struct CrosscheckCommandOptions {
   int toiSweeps = 0;       // > 0: the time-of-impact survey instead of whole runs
   std::uint64_t seed = 1;  // the survey's seed
   std::string pathOut;     // writes Box2D's ball paths here (one step size only): render_path_file.hpp
+  std::string traceOut;    // Box2D v3's program writes its run here as a trace (one step size only)
   std::string trace;       // another engine's run (JSON lines: engine_trace.hpp) instead of Box2D's
   std::string box2dOptionGiven;  // the first Box2D option given on the command line (refused with --trace)
 };

@@ -140,6 +140,9 @@ int main(int argc, char** argv) {
   box2dOptions.push_back(crosscheckCmd->add_option("--seed", crosscheck.seed, "The sweeps' seed")->capture_default_str());
   box2dOptions.push_back(crosscheckCmd->add_option(
       "--path-out", crosscheck.pathOut, "Write Box2D's ball paths (one --dt) to this file, for gizmo render LOG --compare FILE"));
+  box2dOptions.push_back(crosscheckCmd->add_option(
+      "--trace-out", crosscheck.traceOut,
+      "With --engine box2d-v3 and one --dt: the v3 program also writes its run to this file as a trace (for --trace)"));
   crosscheckCmd->add_option("--trace", crosscheck.trace,
                             "Compare with another engine's run of the board, read from this trace (JSON lines) instead of Box2D");
   crosscheckCmd->add_flag("--json", crosscheck.run.json, "Print one JSON object");

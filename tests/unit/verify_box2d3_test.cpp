@@ -15,7 +15,9 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "gizmo/io/key_script.hpp"
 #include "gizmo/verify/box2d3_run.hpp"
@@ -436,6 +438,115 @@ TEST(Box2d3Runs, FlipperBouncesWithItsOwnCoefficient) {
     const double ratio = firstRebound(flipper, dt) / firstRebound(square, dt);
     EXPECT_NEAR(ratio, 0.95 * 0.95, 0.95 * 0.95 * 4 * g * dt / v) << label(dt, true);
   }
+}
+
+// A folder of its own for the trace files of one test, removed after it.
+class TraceFolder {
+ public:
+  TraceFolder() : dir_(std::filesystem::temp_directory_path() / ("gizmo-v3-trace-" + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  ~TraceFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(dir_, ignored);
+  }
+  std::string file(const std::string& name) const { return (dir_ / name).string(); }
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (const auto& entry : std::filesystem::directory_iterator(dir_)) out.push_back(entry.path().filename().string());
+    return out;
+  }
+
+ private:
+  std::filesystem::path dir_;
+};
+
+std::string describe(const CollisionRecord& c) {
+  std::ostringstream out;
+  out.precision(17);
+  out << c.ball << "-" << c.other << "@" << c.time << "(" << c.position.x << "," << c.position.y << ")";
+  return out.str();
+}
+
+// --trace-out: the program writes its run as a trace, and that trace read back is the run the
+// driver recorded. Every collision is the same to the last bit, in the same order (the trace keeps
+// each double as the shortest text that reads back as it): the hits, and the absorber's captures,
+// which the program knows by the driver's hold that follows an entry; the trace's contacts after
+// the run's end (the driver drops them) aside. The paths are the same too where no ball is
+// captured (a capture shows in the trace one step later: the program writes v3's world after each
+// step, the driver its own after its rules). So the two reports agree on every collision figure.
+TEST(Box2d3Runs, TheProgramsTraceIsItsRun) {
+  REQUIRE_BOX2D3();
+  struct Scene {
+    const char* path;
+    double seconds;
+    bool sameSamples;
+  };
+  const double dt = 1.0 / 120;
+  for (const Scene& scene : {Scene{"box2d/spinner-turning.txt", 1.5, true}, Scene{"box2d/flipper-hit.txt", 1, true},
+                             Scene{"gizmos/absorber.txt", 3, false}, Scene{"spec-example.txt", 4, false}}) {
+    const RunRequest r = board(scene.path, scene.seconds);
+    RunRequest longer = r;
+    longer.duration += matchWindow(dt);
+    Box2dOptions o;
+    o.dt = dt;
+    const TraceFolder folder;
+    const std::string file = folder.file("v3.jsonl");
+    EngineTrace run = runBox2d3(longer, o, file);
+    run.run.dt = dt;
+    EXPECT_EQ(folder.names(), std::vector<std::string>{"v3.jsonl"}) << scene.path << ": no temporary file is left";
+    EngineTrace trace = readEngineTraceFile(file, r.board, r.duration);
+    EXPECT_EQ(trace.engine, run.engine);
+    EXPECT_TRUE(trace.run.withCollisions);
+    std::erase_if(trace.run.record.collisions, [&](const CollisionRecord& c) { return c.time > longer.duration; });
+    const std::vector<CollisionRecord>& ours = run.run.record.collisions;
+    const std::vector<CollisionRecord>& read = trace.run.record.collisions;
+    EXPECT_GE(ours.size(), 2u) << scene.path;
+    ASSERT_EQ(read.size(), ours.size()) << scene.path;
+    for (std::size_t i = 0; i < ours.size(); ++i)
+      EXPECT_EQ(describe(read[i]), describe(ours[i])) << scene.path << ", collision " << i;
+    const std::vector<TrajectorySample>& a = run.run.record.samples;
+    const std::vector<TrajectorySample>& b = trace.run.record.samples;
+    ASSERT_EQ(b.size(), a.size()) << scene.path;
+    std::size_t differ = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      ASSERT_EQ(b[k].time, a[k].time) << scene.path << ", step " << k;
+      differ += b[k].positions != a[k].positions || b[k].energy != a[k].energy;
+    }
+    if (scene.sameSamples) {
+      EXPECT_EQ(differ, 0u) << scene.path;
+    }
+    const StepComparison direct = crosscheckRuns(r, {run.run}).steps.at(0);
+    const StepComparison traced = crosscheckRuns(r, {trace.run}).steps.at(0);
+    EXPECT_EQ(traced.theirCollisions, direct.theirCollisions) << scene.path;
+    EXPECT_EQ(traced.matched, direct.matched) << scene.path;
+    EXPECT_EQ(traced.missedByThem, direct.missedByThem) << scene.path;
+    EXPECT_EQ(traced.missedByUs, direct.missedByUs) << scene.path;
+    EXPECT_EQ(traced.maxTimeError, direct.maxTimeError) << scene.path;
+    EXPECT_EQ(traced.meanTimeError, direct.meanTimeError) << scene.path;
+    EXPECT_EQ(traced.maxPositionError, direct.maxPositionError) << scene.path;
+    ASSERT_EQ(traced.firstUnmatched.has_value(), direct.firstUnmatched.has_value()) << scene.path;
+    if (direct.firstUnmatched) {
+      EXPECT_EQ(describe(traced.firstUnmatched->collision), describe(direct.firstUnmatched->collision)) << scene.path;
+    }
+  }
+}
+
+// A trace the program cannot write stops the run with its reason, and leaves nothing.
+TEST(Box2d3Runs, ATraceThatCannotBeWrittenStopsTheRun) {
+  REQUIRE_BOX2D3();
+  const TraceFolder folder;
+  Box2dOptions o;
+  o.dt = 1.0 / 60;
+  try {
+    runBox2d3(board("trace/thin-wall.txt", 0.1), o, folder.file("no-such-folder/v3.jsonl"));
+    ADD_FAILURE() << "the run should fail";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the Box2D v3 program (node run_scene.mjs) "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(exit code 2)"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(folder.names().empty());
 }
 
 }  // namespace

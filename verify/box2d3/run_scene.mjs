@@ -11,7 +11,11 @@
 // contacts of the step. This program adds no geometry and no Gizmoball rule of its own: the core's
 // rules between steps (keys, triggers, flipper and spinner schedules, absorbers, friction) are
 // applied by gizmo's one driver, which speaks to Box2D 2.4 in process and to this program here.
+// The line {"end": true} ends the run. When the scene names a `trace_out` file, the run is also
+// written there in the trace format that `gizmo crosscheck --trace` reads (trace_writer.mjs).
 import { readFileSync, readSync, writeSync } from 'node:fs';
+
+import { TraceWriter } from './trace_writer.mjs';
 
 // The package's files by path: its exports name only the build that picks SIMD and threads.
 const packageDir = new URL('./node_modules/box2d3-wasm/', import.meta.url);
@@ -47,7 +51,7 @@ try {
 } catch (e) {
   fail(`the scene: ${e.message}`);
 }
-if (scene.format !== 'gizmo-box2d-scene' || scene.version !== 2) fail('the scene is not a gizmo-box2d-scene of version 2');
+if (scene.format !== 'gizmo-box2d-scene' || scene.version !== 3) fail('the scene is not a gizmo-box2d-scene of version 3');
 
 // The single-threaded build: the same arithmetic on every machine (the "deluxe" build uses SIMD
 // and threads where the host offers them).
@@ -194,21 +198,46 @@ const fraction = (ball, [x, y]) => {
 // hit nothing then) met the contact there, at the fraction of that step's straight path where it
 // stopped; otherwise the contact is placed at the fraction of this step's path where the ball
 // stands after it.
-function placed(ball, t0) {
+function placed(ball, t0, t1) {
   const earlier = ball.previous;
   const at = earlier && earlier.cut && !earlier.hit ? earlier : { t0, alpha: ball.alpha, from: ball.from, to: ball.to };
   return [
-    Math.min(at.t0 + at.alpha * dt, t0 + dt),  // t0 + dt may round past the step's end
+    Math.min(at.t0 + at.alpha * dt, t1),  // at.t0 + dt may round past the step's end
     at.from[0] + at.alpha * (at.to[0] - at.from[0]),
     at.from[1] + at.alpha * (at.to[1] - at.from[1]),
   ];
 }
 
-reply({ engine: `Box2D v3 (box2d3-wasm ${packageVersion})`, ...where() });
-for (let line = nextLine(); line !== null; line = nextLine()) {
+const engine = `Box2D v3 (box2d3-wasm ${packageVersion})`;
+let trace = null;
+if (typeof scene.trace_out === 'string') {
+  try {
+    trace = new TraceWriter(scene.trace_out, engine, scene.balls.map((b) => b.name), scene.bodies.map((b) => b.name));
+  } catch (e) {
+    fail(`cannot write the trace ${scene.trace_out}: ${e.message}`);
+  }
+}
+const start = where();
+trace?.start(start.balls);
+reply({ engine, ...start });
+// Steps are taken in order from time 0: step k runs from k·dt to (k + 1)·dt, the times the
+// driver samples.
+let k = 0;
+for (let line = nextLine(); line !== null; line = nextLine(), ++k) {
   const request = JSON.parse(line);
+  if (request.end) {
+    try {
+      trace?.finish();
+    } catch (e) {
+      fail(`cannot write the trace ${scene.trace_out}: ${e.message}`);
+    }
+    reply({ end: true, steps: k, trace_out: trace ? scene.trace_out : null });
+    process.exit(0);
+  }
+  trace?.decide(request.ops);
   for (const op of request.ops) apply[op[0]](op.slice(1));
-  const t0 = request.t0;
+  const t0 = request.t0, t1 = (k + 1) * dt;
+  if (t0 !== k * dt) fail(`step ${k} starts at ${t0} s, not at ${k * dt} s`);
   for (const ball of balls) {
     if (ball.held) continue;
     const [x, y] = read(b2.b2Body_GetPosition(ball.id));
@@ -235,7 +264,7 @@ for (let line = nextLine(); line !== null; line = nextLine()) {
     if (seen.has(`${a.ball} ${key}`)) continue;
     seen.add(`${a.ball} ${key}`);
     const ball = balls[a.ball];
-    contacts.push(['hit', a.ball, b.ball !== undefined ? 1 : 0, b.ball ?? b.body, ...placed(ball, t0)]);
+    contacts.push(['hit', a.ball, b.ball !== undefined ? 1 : 0, b.ball ?? b.body, ...placed(ball, t0, t1)]);
     ball.hit = true;
   }
   events.delete();
@@ -246,7 +275,7 @@ for (let line = nextLine(); line !== null; line = nextLine()) {
     const sensor = ownerOfShape.get(e.sensorShapeId.index1), visitor = ownerOfShape.get(e.visitorShapeId.index1);
     if (visitor.ball === undefined) continue;
     balls[visitor.ball].muted = false;
-    contacts.push(['enter', visitor.ball, 0, sensor.body, ...placed(balls[visitor.ball], t0)]);
+    contacts.push(['enter', visitor.ball, 0, sensor.body, ...placed(balls[visitor.ball], t0, t1)]);
   }
   for (let i = 0; i < sensors.endCount; ++i) {
     const e = sensors.GetEndEvent(i);
@@ -257,7 +286,7 @@ for (let line = nextLine(); line !== null; line = nextLine()) {
       ball.muted = false;
       continue;
     }
-    contacts.push(['exit', visitor.ball, 0, sensor.body, ...placed(ball, t0)]);
+    contacts.push(['exit', visitor.ball, 0, sensor.body, ...placed(ball, t0, t1)]);
   }
   sensors.delete();
   // A held ball has no path in this step: a hit in the step after its release is placed there.
@@ -266,5 +295,6 @@ for (let line = nextLine(); line !== null; line = nextLine()) {
       : { t0, alpha: ball.alpha, from: ball.from, to: ball.to, cut: ball.alpha < 1 - 1e-4, hit: ball.hit === true };
     ball.hit = false;
   }
+  trace?.step(t1, state.balls, contacts);
   reply({ ...state, contacts });
 }

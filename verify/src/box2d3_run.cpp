@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -36,11 +37,11 @@ bool nodeOnPath() {
 
 class Box2d3Engine final : public SteppedEngine {
  public:
-  Box2d3Engine(const RunRequest& request, const Box2dOptions& options)
+  Box2d3Engine(const RunRequest& request, const Box2dOptions& options, const std::string& traceOut)
       : process_({"node", (programDir() / "run_scene.mjs").string()}, "the Box2D v3 program (node run_scene.mjs)"),
         bodyCount_(1 + request.board.gizmos.size()),
         balls_(request.board.balls.size()) {
-    process_.send(box2d3Scene(request, options));
+    process_.send(box2d3Scene(request, options, traceOut));
     const Json ready = reply();
     if (!ready.contains("engine") || !ready.at("engine").is_string()) bad("its first reply names no engine");
     name_ = ready.at("engine").get<std::string>();
@@ -48,6 +49,15 @@ class Box2d3Engine final : public SteppedEngine {
   }
 
   const std::string& name() const { return name_; }
+
+  // The run is over: the program writes the rest of its trace, if it keeps one, and ends.
+  void end(std::uint64_t steps) {
+    process_.send(Json{{"end", true}}.dump());
+    const Json r = reply();
+    if (!r.contains("steps") || !r.at("steps").is_number_unsigned() || r.at("steps").get<std::uint64_t>() != steps)
+      bad("its last reply does not say it took the " + std::to_string(steps) + " steps asked for");
+    if (process_.finish() != 0) bad("it did not end with exit code 0");
+  }
 
   EngineBall ball(std::size_t i) const override { return balls_.at(i); }
 
@@ -165,12 +175,14 @@ std::optional<std::string> box2d3Unavailable() {
   return std::nullopt;
 }
 
-EngineTrace runBox2d3(const RunRequest& request, const Box2dOptions& options) {
+EngineTrace runBox2d3(const RunRequest& request, const Box2dOptions& options, const std::string& traceOut) {
   if (const std::optional<std::string> why = box2d3Unavailable()) throw std::runtime_error(*why);
-  Box2d3Engine engine(request, options);
+  // The program's working folder is ours, but a path it is handed should not depend on it.
+  Box2d3Engine engine(request, options, traceOut.empty() ? traceOut : fs::absolute(traceOut).string());
   EngineTrace out;
   out.engine = engine.name();
   out.run.record = driveBox2dRun(request, options.dt, engine);
+  engine.end(out.run.record.steps);
   out.run.dt = options.dt;
   out.run.withCollisions = true;
   return out;

@@ -40,14 +40,14 @@ Json bodyJson(const Box2dBody& body) {
 
 std::optional<std::string> box2d3CannotModel(const BoardSpec& board) { return box2dCannotModel(board); }
 
-std::string box2d3Scene(const RunRequest& request, const Box2dOptions& options) {
+std::string box2d3Scene(const RunRequest& request, const Box2dOptions& options, const std::string& traceOut) {
   Json bodies = Json::array({bodyJson(box2dOuterWalls())});
   for (const GizmoSpec& g : request.board.gizmos) bodies.push_back(bodyJson(box2dBodyOf(g)));
   Json balls = Json::array();
   for (const BallSpec& b : request.board.balls)
     balls.push_back({{"name", b.name}, {"x", b.x}, {"y", b.y}, {"vx", b.vx}, {"vy", b.vy}, {"radius", kBallRadius}});
   const Json scene{{"format", "gizmo-box2d-scene"},
-                   {"version", 2},
+                   {"version", 3},
                    {"gravity", request.board.gravity},
                    {"rest_speed", PhysicsParams<double>{}.restSpeed},
                    {"dt", options.dt},
@@ -56,7 +56,8 @@ std::string box2d3Scene(const RunRequest& request, const Box2dOptions& options) 
                    {"continuous", options.continuous},
                    {"restitution_threshold", options.restitutionThreshold},
                    {"bodies", bodies},
-                   {"balls", balls}};
+                   {"balls", balls},
+                   {"trace_out", traceOut.empty() ? Json(nullptr) : Json(traceOut)}};
   return scene.dump();
 }
 

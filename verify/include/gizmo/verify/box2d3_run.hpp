@@ -24,8 +24,8 @@ inline constexpr double kBox2d3MaxRotation = 0.7853981633974483;  // π/4
 std::optional<std::string> box2d3CannotModel(const BoardSpec& board);
 
 // The scene the node program builds: request.board run at options.dt with options.bullet and
-// options.continuous.
-std::string box2d3Scene(const RunRequest& request, const Box2dOptions& options);
+// options.continuous; with a `traceOut` file, the program also writes its run there as a trace.
+std::string box2d3Scene(const RunRequest& request, const Box2dOptions& options, const std::string& traceOut = {});
 
 // Why the node program cannot run here (no node on the PATH, or the package not installed), or
 // nothing. The program's folder is the GIZMO_BOX2D3_DIR environment variable when set, else the
@@ -34,7 +34,9 @@ std::optional<std::string> box2d3Unavailable();
 
 // The run of the request for request.duration seconds: its engine's name and its record (its
 // wall_seconds the steps' cost, the round trips to node included, node's start-up not);
-// std::runtime_error when the program fails or says something that does not read.
-EngineTrace runBox2d3(const RunRequest& request, const Box2dOptions& options);
+// std::runtime_error when the program fails or says something that does not read. With a
+// `traceOut` file the program also writes the run there, in the trace format of
+// engine_trace.hpp, whole when this returns and not at all when it throws.
+EngineTrace runBox2d3(const RunRequest& request, const Box2dOptions& options, const std::string& traceOut = {});
 
 }  // namespace gizmo::verify

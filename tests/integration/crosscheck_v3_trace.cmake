@@ -1,0 +1,78 @@
+# The Box2D v3 program's own run as a trace, end to end (docs/verification.md, "Box2D v3"):
+#   cmake -DGIZMO=exe -DWORK=dir [-DBOARD=file] -DTIME=s -DDT=step -P crosscheck_v3_trace.cmake
+# `gizmo crosscheck --engine box2d-v3 --dt DT --trace-out FILE` writes the run; `gizmo crosscheck
+# --trace FILE` reads it back and must report the same collisions: the same count, the same
+# matches and misses, the same first unmatched, the same time and position errors, to the last
+# bit (the trace keeps every double as the shortest text that reads back as it). Bad combinations
+# are refused with exit code 2 and write nothing. Without node or the package the run is skipped,
+# saying so, except in CI (CI=true).
+cmake_minimum_required(VERSION 3.25)
+include(${CMAKE_CURRENT_LIST_DIR}/gizmo_cli.cmake)
+foreach(required GIZMO WORK TIME DT)
+  if(NOT DEFINED ${required})
+    message(FATAL_ERROR "crosscheck_v3_trace.cmake needs -D${required}=…")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+set(trace ${WORK}/v3.jsonl)
+
+# Refused before anything runs, and nothing written.
+function(refused what)
+  gizmo_run(RUN crosscheck ${BOARD} --time ${TIME} ${ARGN})
+  file(GLOB written ${WORK}/*)
+  if(NOT RUN_EXIT EQUAL 2 OR NOT RUN_STDOUT STREQUAL "" OR NOT RUN_STDERR MATCHES "${what}" OR written)
+    gizmo_fail("should be refused (exit code 2, nothing printed or written, stderr matching '${what}'): ${written}")
+  endif()
+endfunction()
+refused("--trace-out writes the run of one step size: give --dt one" --engine box2d-v3 --trace-out ${trace})
+refused("--trace-out writes the run of one step size" --engine box2d-v3 --dt 1/60,1/120 --trace-out ${trace})
+refused("--trace-out is written by the Box2D v3 program: use --engine box2d-v3" --dt ${DT} --trace-out ${trace})
+refused("--trace-out writes Box2D v3's run as a trace and --trace reads one" --engine box2d-v3 --dt ${DT} --trace-out ${trace}
+        --trace ${WORK}/none.jsonl)
+
+gizmo_run(RUN crosscheck ${BOARD} --time ${TIME} --dt ${DT} --engine box2d-v3 --trace-out ${trace} --json)
+if(RUN_EXIT EQUAL 2 AND RUN_STDERR MATCHES "package is not installed|no node on the PATH")
+  if("$ENV{CI}" STREQUAL "true")
+    gizmo_fail("CI must have node and the box2d3-wasm package")
+  endif()
+  message("skipped: ${RUN_STDERR}")
+  return()
+endif()
+if(NOT RUN_EXIT EQUAL 0)
+  gizmo_fail("the v3 run with --trace-out should succeed")
+endif()
+set(v3 "${RUN_STDOUT}")
+file(GLOB written RELATIVE ${WORK} ${WORK}/*)
+if(NOT written STREQUAL "v3.jsonl")
+  gizmo_fail("the trace, and only it, should be written (no temporary file left): ${written}")
+endif()
+string(JSON named GET "${v3}" trace_out)
+if(NOT named STREQUAL trace)
+  gizmo_fail("the report should name the trace it wrote: ${named}")
+endif()
+
+gizmo_run(RUN crosscheck ${BOARD} --time ${TIME} --trace ${trace} --json)
+if(NOT RUN_EXIT EQUAL 0)
+  gizmo_fail("the cross-check of the v3 program's trace should succeed")
+endif()
+set(read "${RUN_STDOUT}")
+string(JSON engine GET "${v3}" box2d_version)
+string(JSON traceEngine GET "${read}" trace_engine)
+if(NOT traceEngine STREQUAL engine)
+  gizmo_fail("the trace should name the engine as the v3 run does: '${traceEngine}', not '${engine}'")
+endif()
+string(JSON ours GET "${v3}" ours collisions)
+string(JSON theirs GET "${v3}" steps 0 collisions)
+string(JSON matched GET "${v3}" steps 0 matched)
+if(ours LESS 5 OR theirs LESS 5 OR matched LESS 3)
+  gizmo_fail("the scene should have hits on both sides and matches: ours ${ours}, v3's ${theirs}, ${matched} matched")
+endif()
+foreach(key collisions matched missed_by_engine missed_by_us max_time_error mean_time_error max_position_error
+            matched_within_toi first_unmatched)
+  string(JSON a GET "${v3}" steps 0 ${key})
+  string(JSON b GET "${read}" steps 0 ${key})
+  if(NOT a STREQUAL b)
+    gizmo_fail("the trace's report should have the v3 run's ${key}: ${b}, not ${a}\n--- the v3 run's report\n${v3}")
+  endif()
+endforeach()
