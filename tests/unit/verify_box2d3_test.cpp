@@ -154,6 +154,15 @@ TEST(Box2d3Runs, FastBallKeepsItsEnergyButFallsBehind) {
   EXPECT_EQ(fine.missedByThem + fine.missedByUs, 0u);
 }
 
+// 5000 L/s through a field of bumpers: beyond v3's speed limit (400 m/s), so the run's steps are
+// counted as capped in the report, as Box2D 2.4's are.
+TEST(Box2d3Runs, StepsBeyondTheSpeedLimitAreCounted) {
+  REQUIRE_BOX2D3();
+  const StepComparison c = crosscheckV3(test::fixtureRequest("study/fast-ball-5000.txt", MotionModel::Ballistic, 0.1), 1.0 / 60);
+  EXPECT_GT(c.speedCappedSteps, 0u);
+  EXPECT_EQ(c.rotationCappedSteps, 0u);
+}
+
 // Bounces 0.01 L high (0.71 L/s): with the restitution threshold at 0, v3's soft contacts keep
 // fewer than half of our 35 in 2 s, more at the finer step.
 TEST(Box2d3Runs, SlowBouncesAreLost) {

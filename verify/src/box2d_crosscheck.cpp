@@ -267,6 +267,9 @@ CrosscheckReport crosscheckRuns(const RunRequest& request, const std::vector<Eng
   const RunRecord ours = runOurSide(request, longestWindow, report);
   for (const EngineRun& r : runs) {
     StepComparison c = compareRun(ours, r.record, r.dt, end, r.withCollisions);
+    // What the engine counted (the driver's runs do; a trace has no field for it: 0).
+    c.speedCappedSteps = r.record.speedCappedSteps;
+    c.rotationCappedSteps = r.record.rotationCappedSteps;
     c.steps = static_cast<std::uint64_t>(std::count_if(r.record.samples.begin(), r.record.samples.end(),
                                                        [&](const TrajectorySample& s) { return s.time > 0 && s.time <= end; }));
     report.steps.push_back(std::move(c));
