@@ -542,6 +542,34 @@ TEST(Box2d3Runs, TheProgramsTraceIsItsRun) {
   }
 }
 
+// A capture in the run's last step: the driver holds the ball after it, with no step to follow,
+// so the hold goes with the end of the run and the trace still has the capture.
+TEST(Box2d3Runs, ACaptureInTheLastStepIsInTheTrace) {
+  REQUIRE_BOX2D3();
+  Box2dOptions o;
+  o.dt = 1.0 / 120;
+  RunRequest r = board("gizmos/absorber.txt", 1.5);
+  const auto captureIn = [](const std::vector<CollisionRecord>& list) {
+    return std::find_if(list.begin(), list.end(), [](const CollisionRecord& c) { return c.other == "A"; }) != list.end();
+  };
+  const std::vector<CollisionRecord> whole = runBox2d3(r, o).run.record.collisions;
+  const auto capture = std::find_if(whole.begin(), whole.end(), [](const CollisionRecord& c) { return c.other == "A"; });
+  ASSERT_NE(capture, whole.end());
+  // The run ends with the step whose reply reports the capture: the one ending at or after its
+  // time, or the one after it (a contact placed in the step before its own).
+  std::size_t found = 0;
+  for (double extra : {0.0, o.dt}) {
+    r.duration = capture->time + extra;
+    const TraceFolder folder;
+    const std::vector<CollisionRecord> ours = runBox2d3(r, o, folder.file("v3.jsonl")).run.record.collisions;
+    if (!captureIn(ours)) continue;
+    ++found;
+    EXPECT_TRUE(captureIn(readEngineTraceFile(folder.file("v3.jsonl"), r.board, r.duration).run.record.collisions))
+        << "run to " << r.duration << " s";
+  }
+  EXPECT_GT(found, 0u);
+}
+
 // A trace the program cannot write stops the run with its reason, and leaves nothing.
 TEST(Box2d3Runs, ATraceThatCannotBeWrittenStopsTheRun) {
   REQUIRE_BOX2D3();

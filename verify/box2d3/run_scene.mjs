@@ -11,7 +11,7 @@
 // contacts of the step. This program adds no geometry and no Gizmoball rule of its own: the core's
 // rules between steps (keys, triggers, flipper and spinner schedules, absorbers, friction) are
 // applied by gizmo's one driver, which speaks to Box2D 2.4 in process and to this program here.
-// The line {"end": true} ends the run. When the scene names a `trace_out` file, the run is also
+// The line {"end": true, "ops": [...]} ends the run (the requests made after the last step). When the scene names a `trace_out` file, the run is also
 // written there in the trace format that `gizmo crosscheck --trace` reads (trace_writer.mjs).
 import { readFileSync, readSync, writeSync } from 'node:fs';
 
@@ -227,7 +227,7 @@ for (let line = nextLine(); line !== null; line = nextLine(), ++k) {
   const request = JSON.parse(line);
   if (request.end) {
     try {
-      trace?.finish();
+      trace?.finish(request.ops);
     } catch (e) {
       fail(`cannot write the trace ${scene.trace_out}: ${e.message}`);
     }

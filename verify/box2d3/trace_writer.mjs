@@ -59,9 +59,10 @@ export class TraceWriter {
     this.flush(this.steps.length - 1);
   }
 
-  // The run is over: everything is written and the file takes its name.
-  finish() {
-    this.decide([]);
+  // The run is over (`ops` the requests made after the last step, which decide its contacts):
+  // everything is written and the file takes its name.
+  finish(ops) {
+    this.decide(ops);
     this.flush(this.steps.length);
     this.write();
     closeSync(this.fd);

@@ -50,9 +50,11 @@ class Box2d3Engine final : public SteppedEngine {
 
   const std::string& name() const { return name_; }
 
-  // The run is over: the program writes the rest of its trace, if it keeps one, and ends.
+  // The run is over: the program writes the rest of its trace, if it keeps one, and ends. The
+  // requests made after the last step go with it: a hold among them marks a capture in it.
   void end(std::uint64_t steps) {
-    process_.send(Json{{"end", true}}.dump());
+    process_.send(Json{{"end", true}, {"ops", std::move(ops_)}}.dump());
+    ops_ = Json::array();
     const Json r = reply();
     if (!r.contains("steps") || !r.at("steps").is_number_unsigned() || r.at("steps").get<std::uint64_t>() != steps)
       bad("its last reply does not say it took the " + std::to_string(steps) + " steps asked for");
