@@ -139,6 +139,18 @@ gizmo::RunRequest runSoFar() {
   return r;
 }
 
+// The module's memory is full (an allocation failed: the browser gives WebAssembly no more, or
+// the page's ceiling, FILE#max-memory=MB, is reached): the game stops, in the ticks that end at
+// `in`. The chunk in progress cannot be closed without memory; it is let go, so that the log can
+// be written with what was closed (gp_save).
+void stopShortOfMemory(double in) {
+  game->stopped = "the page's memory ran short";
+  game->memoryShort = true;
+  game->stoppedIn = in;
+  game->board->setObserver(nullptr);
+  game->recorder.reset();
+}
+
 // Runs every whole tick that ends at or before `target`.
 void advanceTo(double target) {
   if (game->stopped.empty()) {
@@ -147,10 +159,7 @@ void advanceTo(double target) {
       try {
         game->board->tickSpan(0.0, game->ticksDone + 1, double(k) * game->request.maxTick);
       } catch (const std::bad_alloc&) {
-        // The module's memory is full: the game stops, and its log is saved as it stands.
-        game->stopped = "the page's memory ran short";
-        game->memoryShort = true;
-        game->stoppedIn = double(k) * game->request.maxTick;
+        stopShortOfMemory(double(k) * game->request.maxTick);
       } catch (const std::exception& e) {
         game->stopped = e.what();
         game->stoppedIn = double(k) * game->request.maxTick;
@@ -313,6 +322,9 @@ EMSCRIPTEN_KEEPALIVE double gp_advance(double target) {
 
 EMSCRIPTEN_KEEPALIVE double gp_now() { return game ? game->board->now() : 0.0; }
 EMSCRIPTEN_KEEPALIVE double gp_events() { return game ? double(game->board->executedTotal()) : 0.0; }
+// The board time the log written now ends at (its header's duration): the present, or, once the
+// board stopped, the end of the ticks it stopped in.
+EMSCRIPTEN_KEEPALIVE double gp_log_end() { return game ? runSoFar().duration : 0.0; }
 EMSCRIPTEN_KEEPALIVE const char* gp_stopped() { return say(game ? game->stopped : ""); }
 EMSCRIPTEN_KEEPALIVE const char* gp_text() { return text.c_str(); }
 
@@ -368,7 +380,6 @@ EMSCRIPTEN_KEEPALIVE const double* gp_swings() {
 // recorded again from the inputs (to the same stop).
 EMSCRIPTEN_KEEPALIVE double gp_save() {
   if (!game) return -1;
-  const gizmo::PrecisionChoice precision{gizmo::Precision::Double, 0};
   game->saved.clear();
   game->savedSplit = -1;
   try {
@@ -376,13 +387,13 @@ EMSCRIPTEN_KEEPALIVE double gp_save() {
     // The header, made now, and every chunk closed (those the page holds go in at savedSplit).
     const auto headerAndChunks = [&] {
       const std::vector<std::uint8_t> header =
-          gizmo::replay::recordHeader(runSoFar(), precision, game->warnings, game->origin);
+          gizmo::replay::recordHeader(runSoFar(), *game->board, game->warnings, game->origin);
       if (game->origin) writer.branchHeader(header);
       else writer.header(header);
       if (game->kept.handedOut() > 0) game->savedSplit = double(game->saved.size());
       game->kept.sendTo(writer);
     };
-    if (game->memoryShort && game->recorder) {
+    if (game->memoryShort && game->recording) {
       // No memory to record the game again: without its end, the log is one cut off after its
       // last complete chunk, which readers take up to there.
       headerAndChunks();
@@ -411,14 +422,24 @@ EMSCRIPTEN_KEEPALIVE double gp_save() {
 EMSCRIPTEN_KEEPALIVE const std::uint8_t* gp_saved() { return game ? game->saved.data() : nullptr; }
 EMSCRIPTEN_KEEPALIVE double gp_save_split() { return game ? game->savedSplit : -1.0; }
 
-// Hands the page every chunk closed since it last took them, framed as the log holds them, one
-// after another, and forgets their bytes (not their place in the log's index): returns their
-// size, the bytes at gp_taken(), kept until gp_forget_taken().
+// Hands the page the oldest chunk closed since it last took one, framed as the log holds it, and
+// forgets its bytes (not its place in the log's index): returns its size (0 when none is left),
+// the bytes at gp_taken(), kept until gp_forget_taken().
+// One chunk at a time: the page takes them until it gets 0 bytes. When there is no memory left
+// even for a chunk's index entry, the game stops (as when a tick finds none) and the chunks stay
+// in the module, to be written into the log.
 EMSCRIPTEN_KEEPALIVE double gp_take_chunks() {
   if (!game) return 0;
-  game->kept.handOut(game->handed);
+  try {
+    game->kept.handOut(game->handed);
+  } catch (const std::bad_alloc&) {
+    if (game->stopped.empty()) stopShortOfMemory(game->board->now());
+    return 0;
+  }
   return double(game->handed.size());
 }
+// How many chunks the game's Recorder has closed (handed to the page or not).
+EMSCRIPTEN_KEEPALIVE double gp_chunks_closed() { return game ? double(game->kept.closed()) : 0.0; }
 EMSCRIPTEN_KEEPALIVE const std::uint8_t* gp_taken() { return game ? game->handed.data() : nullptr; }
 // The page has copied the chunks out: their memory goes back.
 EMSCRIPTEN_KEEPALIVE void gp_forget_taken() {

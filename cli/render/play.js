@@ -458,22 +458,25 @@
   function newStore() { return { parts: [], bytes: 0, moduleMost: 0 }; }
   let store = newStore();
   function takeChunks() {
-    const size = game.api.takeChunks();
-    if (size) {
+    const frames = [];
+    for (let size; (size = game.api.takeChunks()) > 0;) {  // one chunk at a time
       const at = game.api.taken();
-      store.parts.push(new Blob([game.module.HEAPU8.subarray(at, at + size)]));  // a copy
+      frames.push(game.module.HEAPU8.slice(at, at + size));  // a copy: the module's goes back
       store.bytes += size;
       game.api.forgetTaken();
     }
+    if (frames.length) store.parts.push(new Blob(frames));  // one Blob a frame
     store.moduleMost = Math.max(store.moduleMost, game.api.heldBytes());
   }
   // The chunks the page holds, in the order the module handed them over.
   function storedChunks(s) { return s.parts.slice(); }
   // What the game's recording holds: in the module (the chunks not yet handed over, the index,
-  // the last log written, at most that after any frame) and in the page's Blobs.
+  // the last log written, at most that after any frame) and in the page's Blobs; the chunks the
+  // recording closed, and the size of the module's memory.
   function held() {
     const module = game.api.heldBytes();
     return { module, module_most: store.moduleMost, page: store.bytes, parts: store.parts.length,
+             chunks: game.api.chunksClosed(), memory: game.module.HEAPU8.length,
              module_per_event: game.events > 0 ? module / game.events : 0,
              page_per_event: game.events > 0 ? store.bytes / game.events : 0 };
   }
@@ -484,7 +487,7 @@
     const hex = BoardView.hexFloat;
     return {
       time: hex(game.now), time_value: game.now, target: game.target, events: game.events, paused: game.paused,
-      stopped: game.stopped, pending: game.pending.length, start: hex(game.start), branch: game.branch, busy: game.busy,
+      stopped: game.stopped, log_end: game.api.logEnd(), pending: game.pending.length, start: hex(game.start), branch: game.branch, busy: game.busy,
       held: held(),
       inputs: game.inputs.map((k) => ({ code: k.code, up: k.up, time: hex(k.time), time_value: k.time, trusted: k.trusted, source: k.source })),
       shown: shown && { name: shown.name, time: hex(shown.t), time_value: shown.t, events: shown.run.first + shown.done,
@@ -539,10 +542,22 @@
     showTouchKeys();
     showKeys();
   }
+  // FILE#max-memory=MB: the module's memory may grow to MB megabytes (at least its 16 to start
+  // with) instead of WebAssembly's 2 GB, so that a test reaches, within seconds, what a game
+  // reaches when the browser gives the module no more memory: the module's allocation fails where
+  // it happens, and the game stops with its log saved up to its last complete chunk (docs/play.md,
+  // "Memory"). The memory is the module's own (linked with IMPORTED_MEMORY), only given a ceiling.
+  function moduleOptions(hash) {
+    const m = /^#max-memory=(\d+)$/.exec(hash);
+    if (!m) return {};
+    const pages = (mb) => mb * 16;  // WebAssembly pages of 64 KiB
+    const initial = pages(16);      // the module's INITIAL_MEMORY, emscripten's default
+    return { wasmMemory: new WebAssembly.Memory({ initial, maximum: Math.max(initial, pages(Number(m[1]))) }) };
+  }
   describe();
   layout();
   window.addEventListener("resize", layout);
-  GizmoPlayModule().then((m) => {
+  GizmoPlayModule(moduleOptions(window.location.hash)).then((m) => {
     game.module = m;
     game.api = {
       load: m.cwrap("gp_load", "number", ["string", "string", "string", "number", "number", "number"]),
@@ -565,6 +580,8 @@
       taken: m.cwrap("gp_taken", "number", []),
       forgetTaken: m.cwrap("gp_forget_taken", null, []),
       heldBytes: m.cwrap("gp_held_bytes", "number", []),
+      chunksClosed: m.cwrap("gp_chunks_closed", "number", []),
+      logEnd: m.cwrap("gp_log_end", "number", []),
       buffer: m.cwrap("gp_buffer", "number", ["number"]),
       openLog: m.cwrap("gp_open_log", "number", ["string"]),
       takeOver: m.cwrap("gp_take_over", "number", ["number", "number"]),

@@ -34,14 +34,10 @@ RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precisi
                                  [&]<class Real>() { return recordAs<Real>(request, precision, sink, boardWarnings); });
 }
 
-std::vector<std::uint8_t> recordHeader(const RunRequest& request, const PrecisionChoice& precision,
+std::vector<std::uint8_t> recordHeader(const RunRequest& request, const GameBoard<double>& board,
                                        const std::vector<std::string>& boardWarnings,
                                        const std::optional<BranchOrigin>& parent) {
-  // The parameters as the board holds them (the board's file sets gravity and friction).
-  return withRecordablePrecision(precision, [&]<class Real>() {
-    return detail::headerBytes(request, precision, *buildBoard<Real>(request.board, paramsFor<Real>(request)), boardWarnings,
-                                parent);
-  });
+  return headerBytes(request, PrecisionChoice{Precision::Double, 0}, board, boardWarnings, parent);
 }
 
 }  // namespace gizmo::replay

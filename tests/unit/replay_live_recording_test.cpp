@@ -82,7 +82,7 @@ void liveLogsMatchRecordedOnes(MotionModel model, double seconds, int saveEvery)
     live.clear();
     {
       LogWriter writer(live);
-      writer.header(recordHeader(soFar, precision));
+      writer.header(recordHeader(soFar, *board));
       kept.sendTo(writer);
       recorder.finishCopy(writer);
     }

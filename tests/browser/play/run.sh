@@ -3,7 +3,8 @@
 # (flippers and an absorber), of the crowded board (100 balls) and of the spawners' board (balls
 # added as it plays) with BUILD_DIR's gizmo and the
 # play module of WASM_BUILD_DIR, plays each with real key events or touches (play_game.mjs),
-# takes a log over in the page (take_over.mjs) and checks the saved logs natively. Installs chromium and chromium-driver when missing. Usage:
+# takes a log over in the page (take_over.mjs), lets the module's memory run short
+# (memory_short.mjs) and checks the saved logs natively. Installs chromium and chromium-driver when missing. Usage:
 #   tests/browser/play/run.sh [BUILD_DIR [WASM_BUILD_DIR]]   (defaults: build/release, build/cross-wasm32)
 # CI runs it after `scripts/dev cross-check`, which leaves the wasm32 build in place. Pages, logs
 # and screenshots land in BUILD_DIR/play-tests/CASE/.
@@ -30,6 +31,14 @@ play_case spec_example_keys fixtures/boards/spec-example.txt keys
 play_case crowded_30s fixtures/boards/play/crowded-100-balls.txt crowded
 # A long game of the crowded board at 64×, 60 s of board time: the recording's memory bounded.
 play_case crowded_long fixtures/boards/play/crowded-100-balls.txt long
+# The crowded board at 64× in a page whose module may grow to 18 MB only (PAGE#max-memory=18):
+# its memory runs short within seconds; the page stops, saves the game cut off after its last
+# complete chunk, and the native reader reads it up to there.
+dir="$out/memory_short"
+rm -rf "$dir"
+mkdir -p "$dir"
+"$gizmo" play fixtures/boards/play/crowded-100-balls.txt -o "$dir/game.html" --module "$module"
+node tests/browser/play/memory_short.mjs "$gizmo" "$dir/game.html" 18 "$dir"
 # Spawners: each space bar press adds a ball, and a sink feeds a ball back; the game's balls grow.
 play_case spawner_keys fixtures/boards/gizmos/spawner.txt keys
 # The spec example played with a finger on the page's key buttons (touch events).

@@ -29,9 +29,11 @@ struct RecordResult {
 RecordResult recordRun(const RunRequest& request, const PrecisionChoice& precision, ChunkSink& sink,
                        const std::vector<std::string>& boardWarnings = {});
 // The header frame's payload recordRun writes for `request` (a log whose decisions a Recorder
-// gathered as the run went, before its inputs and duration were known: `gizmo play`); with a
-// parent, the header of a branch log (recordBranch's, for a branch played live).
-std::vector<std::uint8_t> recordHeader(const RunRequest& request, const PrecisionChoice& precision,
+// gathered as the run went, before its inputs and duration were known: `gizmo play`), in double,
+// `board` being the board the run is played on; with a parent, the header of a branch log
+// (recordBranch's, for a branch played live). The parameters are the board's: no board is built
+// again, so that the header can be written when memory has run short (docs/play.md, "Memory").
+std::vector<std::uint8_t> recordHeader(const RunRequest& request, const GameBoard<double>& board,
                                        const std::vector<std::string>& boardWarnings = {},
                                        const std::optional<BranchOrigin>& parent = std::nullopt);
 
