@@ -90,8 +90,8 @@ const Dialect kDialects[] = {
          return std::nullopt;
        return DialectReading{DialectOutcome::AsAddition, {}, t[0].column, {}, 0, &dgnSpinner()};
      }},
-    {"keywords in another case", "NiklavsM/Gizmoball (lower-case commands), rgallagher27/308gizmoball and "
-     "jtax/Gizmoball-WJ2 ('Key')", "a command word, 'key' or a direction matched only without regard to case",
+    {"keywords in another case", "NiklavsM/Gizmoball (lower-case commands), stu259/GizmoBall ('Leftflipper'), "
+     "rgallagher27/308gizmoball and jtax/Gizmoball-WJ2 ('Key')", "a command word, 'key' or a direction matched only without regard to case",
      "as the keyword", DialectStage::Keyword,
      [](const DialectInput& in) -> Reading {
        if (in.token->text == in.keyword) return std::nullopt;
@@ -114,8 +114,8 @@ const Dialect kDialects[] = {
     // The format's own commands have their values, and a line short of them is malformed. A gizmo
     // that other programs added is spelled by each its own way: with fewer values (a portal
     // without its exit) it is another program's, left out with what names it.
-    {"another program's gizmo of the same word, with fewer values", "programs whose Portal or Booster is not the one "
-     "the core simulates (docs/board-files.md §2)", "a gizmo other programs added, short of its values",
+    {"another program's gizmo of the same word, with fewer values", "programs whose gizmo of that word is not the one the "
+     "core simulates (a Portal without its exit; no board of the collection)", "a gizmo other programs added, short of its values",
      "left out, with the commands that name it (unless that name exists)", DialectStage::Values,
      [](const DialectInput& in) -> Reading {
        const std::vector<Token>& t = *in.tokens;
@@ -159,8 +159,8 @@ const Dialect kDialects[] = {
      }},
     // Values after what places a gizmo or a ball are its attributes in another program (a
     // circle's radius, a size, a colour) or a comment: it is placed from its own values.
-    {"values after a gizmo's or ball's own", "programs that save attributes of their own (a radius, a size, a colour), "
-     "and comments after a command", "more values after a gizmo's or ball's", "ignored: placed from its own values",
+    {"values after a gizmo's or ball's own", "JamesConway98/GizmoBall (a value after a triangle); "
+     "programs that save a radius, a size or a colour; comments after a command", "more values after a gizmo's or ball's", "ignored: placed from its own values",
      DialectStage::Values,
      [](const DialectInput& in) -> Reading {
        const std::vector<Token>& t = *in.tokens;
@@ -197,7 +197,7 @@ const Dialect kDialects[] = {
                              cell, nullptr};
      }},
     // Java's, JavaFX's and the browsers' names (key_names.cpp).
-    {"keys by name", "lejhy/Gizmoball (JavaFX's names), lheckemann/gizmoball", "a key name key_names.cpp knows",
+    {"keys by name", "lejhy/Gizmoball (JavaFX's names)", "a key name key_names.cpp knows",
      "its Java key code", DialectStage::Key,
      [](const DialectInput& in) -> Reading {
        const std::optional<int> code = keyCodeOfName(in.token->text);
@@ -234,7 +234,7 @@ const Dialect kDialects[] = {
                            "and on the release");
      }},
     // Without this row such a connection would be an error of file order, as a Rotate is.
-    {"connections before gizmos", "savers that write the connections first", "a Connect or KeyConnect naming a gizmo "
+    {"connections before gizmos", "CraigR973/Gizmoball, ItsyPetkov/GizmoBall---Physics-Engine", "a Connect or KeyConnect naming a gizmo "
      "that does not exist at its line", "made at the end of the file when the gizmo exists, else ignored",
      DialectStage::LaterName,
      [](const DialectInput&) -> Reading {
