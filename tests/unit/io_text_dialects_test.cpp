@@ -28,28 +28,30 @@ ReadResult read(const std::string& s) { return readTextBoard(s, "b.txt"); }
   return failure;
 }
 
+// A board whose gizmos the row keeps (`count` of them), with `warning`.
+void expectGizmos(const std::string& board, std::size_t count, const std::string& warning) {
+  const ReadResult r = read(board);
+  EXPECT_EQ(r.board.gizmos.size(), count);
+  EXPECT_TRUE(warned(r, warning));
+}
+
 TEST(TextDialects, ByteOrderMark) {
-  const ReadResult r = read("\xEF\xBB\xBFSquare S 1 1\n");
-  EXPECT_EQ(r.board.gizmos.size(), 1u);
-  EXPECT_TRUE(warned(r, "b.txt:1:1: warning: the UTF-8 byte order mark at the start of the file is ignored"));
+  expectGizmos("\xEF\xBB\xBFSquare S 1 1\n", 1,
+               "b.txt:1:1: warning: the UTF-8 byte order mark at the start of the file is ignored");
 }
 
 TEST(TextDialects, CrLfLineEnds) {
-  const ReadResult r = read("Square S 1 1\r\nCircle C 3 3\r\n");
-  EXPECT_EQ(r.board.gizmos.size(), 2u);
-  EXPECT_TRUE(warned(r, "b.txt:1:13: warning: Windows line ending (CR LF) read as a plain line end"));
+  expectGizmos("Square S 1 1\r\nCircle C 3 3\r\n", 2,
+               "b.txt:1:13: warning: Windows line ending (CR LF) read as a plain line end");
 }
 
 TEST(TextDialects, CrCrLfLineEnds) {
-  const ReadResult r = read("Square S 1 1\r\r\n");
-  EXPECT_EQ(r.board.gizmos.size(), 1u);
-  EXPECT_TRUE(warned(r, "b.txt:1:13: warning: line ending CR CR LF"));
+  expectGizmos("Square S 1 1\r\r\n", 1, "b.txt:1:13: warning: line ending CR CR LF");
 }
 
 TEST(TextDialects, CommentLines) {
-  const ReadResult r = read("# a board\nSquare S 1 1\n");
-  EXPECT_EQ(r.board.gizmos.size(), 1u);
-  EXPECT_TRUE(warned(r, "b.txt:1:1: warning: '#' comment lines are not part of the standard format; ignored"));
+  expectGizmos("# a board\nSquare S 1 1\n", 1,
+               "b.txt:1:1: warning: '#' comment lines are not part of the standard format; ignored");
 }
 
 TEST(TextDialects, DgnSpinnerNamedByItsCell) {
@@ -79,10 +81,9 @@ TEST(TextDialects, AbsorberWithoutItsLowerRightCorner) {
 }
 
 TEST(TextDialects, AnotherProgramsGizmoWithFewerValues) {
-  const ReadResult r = read("Portal P 3 3\nRotate P\nSquare S 1 1\n");
-  EXPECT_EQ(r.board.gizmos.size(), 1u);
-  EXPECT_TRUE(warned(r, "b.txt:1:1: warning: Portal takes 5 values (Portal NAME X Y EXITX EXITY) but the line has 3; "
-                        "it is another program's portal, left out, and so are the commands that name 'P'"));
+  expectGizmos("Portal P 3 3\nRotate P\nSquare S 1 1\n", 1,
+               "b.txt:1:1: warning: Portal takes 5 values (Portal NAME X Y EXITX EXITY) but the line has 3; it is "
+               "another program's portal, left out, and so are the commands that name 'P'");
 }
 
 TEST(TextDialects, WordAfterAGizmoOrBall) {
@@ -100,27 +101,28 @@ TEST(TextDialects, ConnectWithAnAction) {
   EXPECT_TRUE(warned(r, "b.txt:3:13: warning: the action word 'grow' (MIT 6.170's"));
 }
 
-TEST(TextDialects, ValuesAfterAGizmosOwn) {
-  const ReadResult r = read("Circle C 3 3 0.5\n");
+// A board of one gizmo, which the row places at x = `x` with `warning`.
+void expectOneGizmoAt(const std::string& board, int x, const std::string& warning) {
+  const ReadResult r = read(board);
   ASSERT_EQ(r.board.gizmos.size(), 1u);
-  EXPECT_EQ(r.board.gizmos[0].x, 3);
-  EXPECT_TRUE(warned(r, "b.txt:1:14: warning: what follows Circle NAME X Y (1 more, from '0.5') is ignored; it is "
-                        "placed from its own values"));
+  EXPECT_EQ(r.board.gizmos[0].x, x);
+  EXPECT_TRUE(warned(r, warning));
+}
+
+TEST(TextDialects, ValuesAfterAGizmosOwn) {
+  expectOneGizmoAt("Circle C 3 3 0.5\n", 3,
+                   "b.txt:1:14: warning: what follows Circle NAME X Y (1 more, from '0.5') is ignored; it is placed "
+                   "from its own values");
 }
 
 TEST(TextDialects, WholeNumbersWrittenAsDecimals) {
-  const ReadResult r = read("Square S 3.0 1\n");
-  ASSERT_EQ(r.board.gizmos.size(), 1u);
-  EXPECT_EQ(r.board.gizmos[0].x, 3);
-  EXPECT_TRUE(warned(r, "b.txt:1:10: warning: '3.0' is read as the whole number 3"));
+  expectOneGizmoAt("Square S 3.0 1\n", 3, "b.txt:1:10: warning: '3.0' is read as the whole number 3");
 }
 
 TEST(TextDialects, CoordinatesWithAFraction) {
-  const ReadResult r = read("RightFlipper RF 12.5 2\n");
-  ASSERT_EQ(r.board.gizmos.size(), 1u);
-  EXPECT_EQ(r.board.gizmos[0].x, 12);
-  EXPECT_TRUE(warned(r, "b.txt:1:17: warning: '12.5' is not a whole number; the gizmo is placed in the cell it starts "
-                        "in, 12"));
+  expectOneGizmoAt("RightFlipper RF 12.5 2\n", 12,
+                   "b.txt:1:17: warning: '12.5' is not a whole number; the gizmo is placed in the cell it starts in, "
+                   "12");
 }
 
 TEST(TextDialects, KeysByName) {

@@ -160,8 +160,8 @@ const Dialect kDialects[] = {
     // Values after what places a gizmo or a ball are its attributes in another program (a
     // circle's radius, a size, a colour) or a comment: it is placed from its own values.
     {"values after a gizmo's or ball's own", "JamesConway98/GizmoBall (a value after a triangle); "
-     "programs that save a radius, a size or a colour; comments after a command", "more values after a gizmo's or ball's", "ignored: placed from its own values",
-     DialectStage::Values,
+     "programs that save a radius, a size or a colour; comments after a command",
+     "more values after a gizmo's or ball's", "ignored: placed from its own values", DialectStage::Values,
      [](const DialectInput& in) -> Reading {
        const std::vector<Token>& t = *in.tokens;
        const CommandView& c = *in.command;
