@@ -91,7 +91,8 @@ const Dialect kDialects[] = {
        return DialectReading{DialectOutcome::AsAddition, {}, t[0].column, {}, 0, &dgnSpinner()};
      }},
     {"keywords in another case", "NiklavsM/Gizmoball (lower-case commands), stu259/GizmoBall ('Leftflipper'), "
-     "rgallagher27/308gizmoball and jtax/Gizmoball-WJ2 ('Key')", "a command word, 'key' or a direction matched only without regard to case",
+     "rgallagher27/308gizmoball and jtax/Gizmoball-WJ2 ('Key')",
+     "a command word, 'key' or a direction matched only without regard to case",
      "as the keyword", DialectStage::Keyword,
      [](const DialectInput& in) -> Reading {
        if (in.token->text == in.keyword) return std::nullopt;
@@ -114,8 +115,10 @@ const Dialect kDialects[] = {
     // The format's own commands have their values, and a line short of them is malformed. A gizmo
     // that other programs added is spelled by each its own way: with fewer values (a portal
     // without its exit) it is another program's, left out with what names it.
-    {"another program's gizmo of the same word, with fewer values", "programs whose gizmo of that word is not the one the "
-     "core simulates (a Portal without its exit; no board of the collection)", "a gizmo other programs added, short of its values",
+    {"another program's gizmo of the same word, with fewer values",
+     "programs whose gizmo of that word is not the one the core simulates (a Portal without its exit; no board of "
+     "the collection)",
+     "a gizmo other programs added, short of its values",
      "left out, with the commands that name it (unless that name exists)", DialectStage::Values,
      [](const DialectInput& in) -> Reading {
        const std::vector<Token>& t = *in.tokens;
@@ -234,8 +237,9 @@ const Dialect kDialects[] = {
                            "and on the release");
      }},
     // Without this row such a connection would be an error of file order, as a Rotate is.
-    {"connections before gizmos", "CraigR973/Gizmoball, ItsyPetkov/GizmoBall---Physics-Engine", "a Connect or KeyConnect naming a gizmo "
-     "that does not exist at its line", "made at the end of the file when the gizmo exists, else ignored",
+    {"connections before gizmos", "CraigR973/Gizmoball, ItsyPetkov/GizmoBall---Physics-Engine",
+     "a Connect or KeyConnect naming a gizmo that does not exist at its line",
+     "made at the end of the file when the gizmo exists, else ignored",
      DialectStage::LaterName,
      [](const DialectInput&) -> Reading {
        return DialectReading{DialectOutcome::MakeAtEnd, "connection-later", 0,

@@ -527,7 +527,8 @@ class TextReader {
 
   void repeated(SourcePos where, SourcePos first) {
     rep_.lenient("duplicate-connection", where,
-                 "this connection repeats the one on line " + std::to_string(first.line) + "; the repetition is ignored");
+                 "this connection repeats the one on line " + std::to_string(first.line) +
+                     "; the repetition is ignored");
   }
 
   // The key code of a KeyConnect: a whole number, or a key's name as programs write it (Java's,
