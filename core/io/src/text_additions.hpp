@@ -26,7 +26,8 @@ struct Addition {
 const Addition* findAddition(std::string_view word);
 
 // d-g-n/CS308-GizmoBall's spinner, spelled as NiklavsM/Gizmoball's (`Spinner NAME X Y`), which the
-// core simulates: told apart by its name (whether a line is d-g-n's is the reader's to decide).
+// core simulates: told apart by its name (whether a line is d-g-n's is the dialects table's to
+// decide, text_dialects.cpp).
 const Addition& dgnSpinner();
 
 }  // namespace gizmo::io::detail

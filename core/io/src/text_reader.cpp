@@ -1,23 +1,22 @@
-// The text board format: one command a line, executed in file order (docs/board-files.md).
+// The text board format: one command a line, executed in file order (docs/board-files.md). What
+// the lines make is kept in the edit model (board_edits.hpp); how other programs write lines
+// differently is the dialects table's (text_dialects.cpp), which this reader asks.
 #include "gizmo/io/text_reader.hpp"
 
-#include <algorithm>
 #include <array>
-#include <cmath>
 #include <optional>
-#include <map>
-#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
+#include "board_edits.hpp"
 #include "board_repair.hpp"
-#include "edited_list.hpp"
 #include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/core/gizmo_kinds.hpp"
 #include "key_names.hpp"
 #include "parse_util.hpp"
 #include "foreign_format.hpp"
 #include "text_additions.hpp"
+#include "text_dialects.hpp"
 
 namespace gizmo::io {
 namespace {
@@ -70,9 +69,10 @@ class TextReader {
 
   BoardSpec run() {
     std::size_t pos = 0;
-    if (startsWithBom(content_)) {
-      rep_.lenient("bom", SourcePos{1, 1}, "the UTF-8 byte order mark at the start of the file is ignored");
-      pos = kBom.size();
+    if (const std::optional<DialectReading> r =
+            readDialect(DialectStage::FileStart, DialectInput{.text = content_})) {
+      rep_.lenient(r->kind, SourcePos{1, r->column}, r->message);
+      pos = static_cast<std::size_t>(r->value);  // DialectOutcome::Skip, the only one of this stage
     }
     while (true) {
       const std::size_t nl = content_.find('\n', pos);
@@ -86,12 +86,6 @@ class TextReader {
   }
 
  private:
-  struct Ref {
-    bool ball = false;
-    std::size_t index = 0;
-    int line = 0;      // where it was created
-    std::string name;  // its name on the board (the file may write it otherwise)
-  };
   struct Unresolved {
     std::string name;
     SourcePos at;
@@ -102,23 +96,17 @@ class TextReader {
   SourcePos at(const Token& t) const { return SourcePos{line_, t.column}; }
 
   void readLine(std::string_view text) {
-    std::size_t crs = 0;
-    while (!text.empty() && text.back() == '\r') text.remove_suffix(1), ++crs;
-    if (crs == 1)
-      rep_.lenient("crlf", SourcePos{line_, static_cast<int>(text.size()) + 1},
-                   "Windows line ending (CR LF) read as a plain line end");
-    else if (crs > 1)
-      rep_.lenient("crcrlf", SourcePos{line_, static_cast<int>(text.size()) + 1},
-                   "line ending CR CR LF (a CR LF file saved again through a CR LF conversion) read as a plain "
-                   "line end");
+    if (const std::optional<DialectReading> r = readDialect(DialectStage::LineEnd, DialectInput{.text = text})) {
+      warn(*r);
+      text.remove_suffix(static_cast<std::size_t>(r->value));  // DialectOutcome::StripLineEnd
+    }
     const std::optional<std::vector<Token>> tokens =
         tokenizeLine(text, line_, rep_, "the line is longer than 65536 bytes; no board line is that long");
     if (!tokens) return;
     const std::vector<Token>& t = *tokens;
     if (t.empty()) return;
-    if (t[0].text[0] == '#') {
-      rep_.lenient("comment", at(t[0]), "'#' comment lines are not part of the standard format; ignored");
-      return;
+    if (const std::optional<DialectReading> r = readDialect(DialectStage::Line, DialectInput{.tokens = &t})) {
+      if (!readOn(*r, t)) return;
     }
     const CommandInfo* cmd = findCommand(t[0].text);
     if (!cmd) {
@@ -131,71 +119,19 @@ class TextReader {
       return;
     }
     ++commandLines_;
-    // d-g-n/CS308-GizmoBall's saver names every gizmo by its cell, X_Y; its spinner is another
-    // gizmo than NiklavsM/Gizmoball's of the same spelling, which the core simulates.
-    if (cmd->type == GizmoType::Spinner && cmd->cmd == Cmd::Gizmo && t.size() == 4 &&
-        t[1].text == std::string(t[2].text) + "_" + std::string(t[3].text)) {
-      addition(dgnSpinner(), t);
-      return;
+    const CommandView view{cmd->canonical, cmd->usage, cmd->tokens, roleOf(cmd->cmd), cmd->type};
+    const DialectInput line{.tokens = &t, .command = &view};
+    if (const std::optional<DialectReading> r = readDialect(DialectStage::Claim, line)) {
+      if (!readOn(*r, t)) return;
     }
-    if (t[0].text != cmd->canonical) keywordCase(t[0], cmd->canonical);
-    if (cmd->cmd == Cmd::Absorber && t.size() == 4) {
-      // CraigR973/Gizmoball's later saver writes an absorber's upper-left corner only.
-      rep_.lenient("absorber-corner", at(t[0]),
-                   "this absorber has no lower-right corner (Absorber NAME X1 Y1 X2 Y2); it is left out, and so are "
-                   "the commands that name " + quote(t[1].text));
-      leftOut_[std::string(t[1].text)] = std::string(t[0].text);
-      return;
-    }
-    const bool creates = cmd->cmd == Cmd::Gizmo || cmd->cmd == Cmd::Absorber || cmd->cmd == Cmd::Ball;
-    if (t.size() < cmd->tokens) {
-      // The format's own commands have their values, and a line short of them is malformed. A
-      // gizmo that other programs added is spelled by each its own way: with fewer values (a
-      // portal without its exit) it is another program's, left out with what names it.
-      if (cmd->cmd == Cmd::Gizmo && !isStandardKind(cmd->type)) {
-        rep_.lenient("too-few-values:" + toLowerAscii(cmd->canonical), at(t[0]),
-                     std::string(cmd->canonical) + " takes " + std::to_string(cmd->tokens - 1) + " values (" +
-                         std::string(cmd->usage) + ") but the line has " + std::to_string(t.size() - 1) +
-                         "; it is another program's " + std::string(gizmoTypeWord(cmd->type)) +
-                         ", left out" + (t.size() >= 2 ? ", and so are the commands that name " + quote(t[1].text)
-                                                        : std::string()));
-        if (t.size() >= 2) leaveOutName(t[1], t[0]);
+    keyword(t[0], cmd->canonical);
+    if (t.size() != cmd->tokens) {
+      const std::optional<DialectReading> r = readDialect(DialectStage::Values, line);
+      if (!r) {
+        wrongValueCount(*cmd, t);
         return;
       }
-      rep_.error(at(t[0]), std::string(cmd->canonical) + " needs " + std::to_string(cmd->tokens - 1) + " value" +
-                               (cmd->tokens == 2 ? "" : "s") + " (" + std::string(cmd->usage) + ") but the line has " +
-                               std::to_string(t.size() - 1));
-      if (creates && t.size() >= 2) failed_.insert(std::string(t[1].text));
-      return;
-    }
-    if (t.size() == cmd->tokens + 1 && (cmd->cmd == Cmd::Gizmo || cmd->cmd == Cmd::Ball) && allLetters(t.back().text)) {
-      rep_.lenient("trailing-word", at(t.back()),
-                   "the word " + quote(t.back().text) + " after " + std::string(cmd->usage) +
-                       " is ignored (rgallagher27/308gizmoball writes a flipper's side as true/false there, "
-                       "LukeBev/GizmoBall a colour; their readers do not use it)");
-    } else if (t.size() == cmd->tokens + 1 && cmd->cmd == Cmd::Connect && allLetters(t.back().text)) {
-      if (namesLeftOut(t[2], t[0])) return;
-      rep_.lenient("connect-action", at(t.back()),
-                   "the action word " + quote(t.back().text) +
-                       " (MIT 6.170's 'Connect PRODUCER CONSUMER ACTION') is ignored; the consumer performs its own "
-                       "action");
-    } else if (t.size() > cmd->tokens && creates) {
-      // Values after what places a gizmo or a ball are its attributes in another program (a
-      // circle's radius, a size, a colour) or a comment: it is placed from its own values.
-      const Token& extra = t[cmd->tokens];
-      rep_.lenient("extra-values:" + toLowerAscii(cmd->canonical), at(extra),
-                   "what follows " + std::string(cmd->usage) + " (" + std::to_string(t.size() - cmd->tokens) +
-                       " more, from " + quote(extra.text) + ") is ignored" +
-                       (extra.text[0] == '#' ? " (the standard format has comments on lines of their own)"
-                                             : "; it is placed from its own values"));
-    } else if (t.size() > cmd->tokens) {
-      // After any other command, more values say something this reader cannot know.
-      const Token& extra = t[cmd->tokens];
-      rep_.error(at(extra), "unexpected " + quote(extra.text) + " after the end of the command: " +
-                                std::string(cmd->usage) + " takes " + std::to_string(cmd->tokens - 1) + " value" +
-                                (cmd->tokens == 2 ? "" : "s") +
-                                (extra.text[0] == '#' ? " (comments must be on a line of their own)" : ""));
-      return;
+      if (!readOn(*r, t)) return;
     }
     switch (cmd->cmd) {
       case Cmd::Gizmo:
@@ -211,13 +147,75 @@ class TextReader {
     }
   }
 
+  static CommandRole roleOf(Cmd c) {
+    switch (c) {
+      case Cmd::Gizmo: return CommandRole::Gizmo;
+      case Cmd::Absorber: return CommandRole::Absorber;
+      case Cmd::Ball: return CommandRole::Ball;
+      case Cmd::Connect: return CommandRole::Connect;
+      default: return CommandRole::Other;
+    }
+  }
+
+  void warn(const DialectReading& r) { rep_.lenient(r.kind, SourcePos{line_, r.column}, r.message); }
+
+  // What a dialect row says of a whole line (stages Line, Claim, Values): false when the line
+  // ends there, true when it is read on as the format.
+  bool readOn(const DialectReading& r, const std::vector<Token>& t) {
+    switch (r.outcome) {
+      case DialectOutcome::IgnoreLine: warn(r); return false;
+      case DialectOutcome::AsAddition: addition(*r.addition, t); return false;  // the addition warns
+      case DialectOutcome::ReadOn: warn(r); return true;
+      case DialectOutcome::ReadOnUnlessConsumerLeftOut:
+        if (namesLeftOut(t[2], t[0])) return false;
+        warn(r);
+        return true;
+      case DialectOutcome::LeaveOutName:
+        warn(r);
+        if (t.size() >= 2) leftOut_[std::string(t[1].text)] = std::string(t[0].text);
+        return false;
+      case DialectOutcome::LeaveOutNewName:
+        warn(r);
+        if (t.size() >= 2) leaveOutName(t[1], t[0]);
+        return false;
+      default: return true;  // the outcomes of the other stages do not come here
+    }
+  }
+
+  // The format's own errors: a command with fewer values than it has is malformed, and values
+  // after a command say something this reader cannot know (no dialect row read them).
+  void wrongValueCount(const CommandInfo& cmd, const std::vector<Token>& t) {
+    if (t.size() < cmd.tokens) {
+      rep_.error(at(t[0]), std::string(cmd.canonical) + " needs " + std::to_string(cmd.tokens - 1) + " value" +
+                               (cmd.tokens == 2 ? "" : "s") + " (" + std::string(cmd.usage) + ") but the line has " +
+                               std::to_string(t.size() - 1));
+      const bool creates = cmd.cmd == Cmd::Gizmo || cmd.cmd == Cmd::Absorber || cmd.cmd == Cmd::Ball;
+      if (creates && t.size() >= 2) failed_.insert(std::string(t[1].text));
+      return;
+    }
+    const Token& extra = t[cmd.tokens];
+    rep_.error(at(extra), "unexpected " + quote(extra.text) + " after the end of the command: " +
+                              std::string(cmd.usage) + " takes " + std::to_string(cmd.tokens - 1) + " value" +
+                              (cmd.tokens == 2 ? "" : "s") +
+                              (extra.text[0] == '#' ? " (comments must be on a line of their own)" : ""));
+  }
+
+  // A keyword of the format that the reader matched without regard to case.
+  void keyword(const Token& t, std::string_view canonical) {
+    if (const std::optional<DialectReading> r =
+            readDialect(DialectStage::Keyword, DialectInput{.token = &t, .keyword = canonical}))
+      warn(*r);
+  }
+
+  static DialectInput word(const Token& t) { return DialectInput{.token = &t}; }
+
   // A line whose first word is no command of the format, nor another program's addition that
   // this reader knows: left out, with one warning per word and a count. The name after it, when
   // it is not one the board has, is taken for what the line would create, and the commands that
   // name it are left out too. A file with no line of the format at all is no board (finish).
   void unknownCommand(const std::vector<Token>& t) {
     if (!firstUnknown_) firstUnknown_ = Unknown{std::string(t[0].text), at(t[0])};
-    const bool names = t.size() >= 2 && !names_.count(std::string(t[1].text)) &&
+    const bool names = t.size() >= 2 && !edits_.find(std::string(t[1].text)) &&
                        !leftOut_.count(std::string(t[1].text)) && nameProblem(t[1].text).empty();
     rep_.lenient("unknown-command:" + toLowerAscii(t[0].text), at(t[0]),
                  quote(t[0].text) + " is not a command of the Gizmoball format (Square, Circle, Triangle, "
@@ -230,26 +228,21 @@ class TextReader {
   // What a left-out line would have created: later commands that name it are left out.
   void leaveOutName(const Token& name, const Token& command) {
     const std::string written(name.text);
-    if (names_.count(written)) return;  // an object of that name exists; the line does not replace it
+    if (edits_.find(written)) return;  // an object of that name exists; the line does not replace it
     leftOut_[written] = std::string(command.text);
   }
 
-  void keywordCase(const Token& t, std::string_view canonical) {
-    rep_.lenient("keyword-case", at(t),
-                 quote(t.text) + " is written " + quote(canonical) +
-                     " in the standard format; keywords are read without regard to case");
-  }
-
   bool whole(const Token& t, const std::string& what, long long& out) {
+    if (const std::optional<DialectReading> r = readDialect(DialectStage::Whole, word(t))) {
+      warn(*r);
+      out = r->value;  // DialectOutcome::UseValue
+      return true;
+    }
     const Whole w = parseWhole(t.text, what);
     if (!w.ok) {
       rep_.error(at(t), w.problem);
       return false;
     }
-    if (w.writtenAsDecimal)
-      rep_.lenient("integral-decimal", at(t),
-                   quote(t.text) + " is read as the whole number " + std::to_string(w.value) +
-                       " (the standard format writes whole numbers here)");
     out = w.value;
     return true;
   }
@@ -265,16 +258,7 @@ class TextReader {
   }
 
   std::string kindOf(const Ref& r) const {
-    return r.ball ? std::string("ball") : std::string(gizmoTypeWord(gizmos_[r.index].type));
-  }
-
-  // A key's name rather than a malformed number: it starts with a letter.
-  static bool looksLikeWord(std::string_view s) {
-    return !s.empty() && ((s[0] >= 'a' && s[0] <= 'z') || (s[0] >= 'A' && s[0] <= 'Z'));
-  }
-
-  static bool allLetters(std::string_view s) {
-    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); });
+    return r.ball ? std::string("ball") : std::string(gizmoTypeWord(edits_.gizmo(r).type));
   }
 
   // The name an object written `written` gets on the board: the same when it is a valid name not
@@ -293,29 +277,24 @@ class TextReader {
       for (char& c : base)
         if (!nameProblem(std::string_view(&c, 1)).empty()) c = '_';
     std::string name = base;
-    for (int k = 2; taken_.count(name) || name == kOuterWallsName; ++k) name = base + "_" + std::to_string(k);
+    for (int k = 2; edits_.taken(name) || name == kOuterWallsName; ++k) name = base + "_" + std::to_string(k);
     if (invalid)
       rep_.lenient("name-characters", at(t),
                    quote(written) + " is not a standard name (names use only letters, digits and _); the " + what +
                        " is named " + quote(name) + " (later commands that name " + quote(written) + " mean it)");
     else if (name != written) {
-      const auto it = names_.find(written);
+      const Ref* r = edits_.find(written);
       rep_.lenient("name-twice", at(t),
                    "the name " + quote(written) + " is already used" +
-                       (it != names_.end() ? " by the " + kindOf(it->second) + " created on line " +
-                                                 std::to_string(it->second.line)
-                                           : std::string()) +
+                       (r ? " by the " + kindOf(*r) + " created on line " + std::to_string(r->line) : std::string()) +
                        "; this " + what + " is named " + quote(name) + " (later commands that name " + quote(written) +
                        " mean it)");
     }
     return name;
   }
 
-  void created(const std::string& written, const std::string& name, Ref ref) {
-    ref.line = line_;
-    ref.name = name;
-    names_[written] = ref;
-    taken_.insert(name);
+  // What the reader keeps about a name besides the board (edits_) when an object takes it.
+  void created(const std::string& written) {
     leftOut_.erase(written);
     // Unknown-name errors about this name learn that it is created later.
     if (const auto it = pending_.find(written); it != pending_.end()) {
@@ -335,7 +314,7 @@ class TextReader {
                          (t.size() >= 2 ? ", and so are the commands that name " + quote(t[1].text) : std::string()));
         if (t.size() >= 2) {
           const std::string written(t[1].text);
-          if (const auto it = names_.find(written); it != names_.end() && !it->second.ball) {
+          if (const Ref* r = edits_.find(written); r && !r->ball) {
             // A gizmo of the same name exists; the addition does not replace it.
           } else {
             leftOut_[written] = word;
@@ -365,18 +344,12 @@ class TextReader {
     return true;
   }
 
-  // A gizmo coordinate: a whole number; a decimal with a fraction is read as the cell it starts in.
+  // A gizmo coordinate: a whole number.
   bool cell(const Token& t, const std::string& what, long long& out) {
-    const Whole w = parseWhole(t.text, what);
-    if (!w.ok) {
-      const Number n = parseDecimal(t.text, what);
-      if (n.ok && std::fabs(n.value) <= kMaxWhole) {
-        out = static_cast<long long>(std::floor(n.value));
-        rep_.lenient("fractional-cell", at(t),
-                     quote(t.text) + " is not a whole number; the gizmo is placed in the cell it starts in, " +
-                         std::to_string(out));
-        return true;
-      }
+    if (const std::optional<DialectReading> r = readDialect(DialectStage::Cell, word(t))) {
+      warn(*r);
+      out = r->value;  // DialectOutcome::UseValue
+      return true;
     }
     return whole(t, what, out);
   }
@@ -424,7 +397,8 @@ class TextReader {
       g.exitX = static_cast<int>(v[2]);
       g.exitY = static_cast<int>(v[3]);
     }
-    created(written, name, Ref{false, gizmos_.add(std::move(g)), 0, {}});
+    edits_.addGizmo(written, std::move(g), line_);
+    created(written);
   }
 
   void createBall(const std::vector<Token>& t) {
@@ -443,14 +417,15 @@ class TextReader {
       if (nameOk) failed_.insert(written);
       return;
     }
-    created(written, name, Ref{true, balls_.add(std::move(b)), 0, {}});
+    edits_.addBall(written, std::move(b), line_);
+    created(written);
   }
 
   // The live object written t, or null (the error is reported, or deferred so that it can say
   // whether the name is created later).
   const Ref* lookup(const Token& t, const std::string& what) {
     const std::string written(t.text);
-    if (const auto it = names_.find(written); it != names_.end()) return &it->second;
+    if (const Ref* r = edits_.find(written)) return r;
     if (!failed_.count(written)) {
       std::string message = "there is no " + what + " named " + quote(written);
       if (toLowerAscii(written) == "outerwalls") message += " (the outer walls are named OuterWalls)";
@@ -468,7 +443,7 @@ class TextReader {
       rep_.error(at(t[1]), "ball " + quote(t[1].text) + " cannot be rotated: only gizmos turn");
       return;
     }
-    GizmoSpec& g = gizmos_[r->index];
+    GizmoSpec& g = edits_.gizmo(*r);
     if (g.type == GizmoType::Absorber) {
       rep_.error(at(t[1]), "absorber " + quote(t[1].text) + " cannot be rotated");
       return;
@@ -482,29 +457,8 @@ class TextReader {
       leftOut_.erase(std::string(t[1].text));
       return;
     }
-    const Ref* r = lookup(t[1], "gizmo or ball");
-    if (!r) return;
-    const std::string name = r->name;
-    if (r->ball)
-      balls_.remove(r->index);
-    else
-      gizmos_.remove(r->index);
-    names_.erase(std::string(t[1].text));
-    taken_.erase(name);
-    // Its connections go with it.
-    if (const auto it = connectionsOf_.find(name); it != connectionsOf_.end()) {
-      for (const std::size_t i : it->second)
-        if (connections_.remove(i)) connectionIndex_.erase({connections_[i].source, connections_[i].target});
-      connectionsOf_.erase(it);
-    }
-    if (const auto it = keyConnectionsOf_.find(name); it != keyConnectionsOf_.end()) {
-      for (const std::size_t i : it->second)
-        if (keyConnections_.remove(i)) {
-          const KeyConnectSpec& k = keyConnections_[i];
-          keyIndex_.erase({k.key, static_cast<int>(k.direction), k.target});
-        }
-      keyConnectionsOf_.erase(it);
-    }
+    if (!lookup(t[1], "gizmo or ball")) return;
+    edits_.remove(std::string(t[1].text));
   }
 
   void move(const std::vector<Token>& t) {
@@ -516,7 +470,7 @@ class TextReader {
       bool ok = decimal(t[2], "the x coordinate", x);
       ok = decimal(t[3], "the y coordinate", y) && ok;
       if (!ok) return;
-      BallSpec& b = balls_[r->index];
+      BallSpec& b = edits_.ball(*r);
       b.x = x;
       b.y = y;
       b.where = at(t[0]);
@@ -525,7 +479,7 @@ class TextReader {
       bool ok = cell(t[2], "the x coordinate", x);
       ok = cell(t[3], "the y coordinate", y) && ok;
       if (!ok) return;
-      GizmoSpec& g = gizmos_[r->index];
+      GizmoSpec& g = edits_.gizmo(*r);
       g.x = static_cast<int>(x);
       g.y = static_cast<int>(y);
       g.where = at(t[0]);
@@ -541,7 +495,7 @@ class TextReader {
       rep_.error(at(t), "the outer walls cannot be a connection target: they have no action");
       return std::nullopt;
     }
-    if (const auto it = names_.find(written); it != names_.end()) return it->second.name;
+    if (const Ref* r = edits_.find(written)) return r->name;
     if (failed_.count(written)) return std::nullopt;
     return std::string();
   }
@@ -551,23 +505,30 @@ class TextReader {
     const std::optional<std::string> source = end(t[1], true), target = end(t[2], false);
     if (!source || !target) return;
     if (source->empty() || target->empty()) {
-      deferred_.push_back(Deferred{std::string(t[1].text), std::string(t[2].text), 0, {}, at(t[0]), false});
+      if (const std::optional<DialectReading> later = laterName()) {
+        deferred_.push_back(Deferred{std::string(t[1].text), std::string(t[2].text), 0, {}, at(t[0]), false, *later});
+        return;
+      }
+      if (source->empty()) lookup(t[1], "gizmo");
+      if (target->empty()) lookup(t[2], "gizmo");
       return;
     }
     addConnect(ConnectSpec{*source, *target, at(t[0])});
   }
 
+  // A connection that names what does not exist yet: what the dialects table says of it
+  // (DialectOutcome::MakeAtEnd), else it is an error of file order.
+  std::optional<DialectReading> laterName() { return readDialect(DialectStage::LaterName, DialectInput{}); }
+
   void addConnect(ConnectSpec c) {
-    const auto [it, inserted] = connectionIndex_.emplace(std::make_pair(c.source, c.target), connections_.size());
-    if (!inserted) {
-      rep_.lenient("duplicate-connection", c.where,
-                   "this connection repeats the one on line " + std::to_string(connections_[it->second].where.line) +
-                       "; the repetition is ignored");
-      return;
-    }
-    connectionsOf_[c.source].push_back(connections_.size());
-    connectionsOf_[c.target].push_back(connections_.size());
-    connections_.add(std::move(c));
+    const SourcePos where = c.where;
+    if (const ConnectSpec* first = edits_.connect(std::move(c))) repeated(where, first->where);
+  }
+
+  void repeated(SourcePos where, SourcePos first) {
+    rep_.lenient("duplicate-connection", where,
+                 "this connection repeats the one on line " + std::to_string(first.line) +
+                     "; the repetition is ignored");
   }
 
   // The key code of a KeyConnect: a whole number, or a key's name as programs write it (Java's,
@@ -575,19 +536,13 @@ class TextReader {
   // leaves the connection out (`unknownKey`), since no key of ours would trigger it.
   bool keyCode(const Token& t, long long& key, bool& unknownKey) {
     if (!parseDecimal(t.text, "the key code").ok) {
-      if (const std::optional<int> named = keyCodeOfName(t.text)) {
-        key = *named;
-        rep_.lenient("key-name", at(t),
-                     "the key " + quote(t.text) + " is read as the key code " + std::to_string(key) +
-                         " (programs write Java's, JavaFX's or the browsers' key names; the standard format writes "
-                         "the code)");
-        return true;
-      }
-      if (looksLikeWord(t.text)) {
-        unknownKey = true;
-        rep_.lenient("key-unknown", at(t),
-                     "the key " + quote(t.text) + " is neither a key code nor a key name this reader knows; the "
-                     "connection is left out");
+      if (const std::optional<DialectReading> r = readDialect(DialectStage::Key, word(t))) {
+        warn(*r);
+        if (r->outcome == DialectOutcome::UseValue) {
+          key = r->value;
+          return true;
+        }
+        unknownKey = true;  // DialectOutcome::LeaveOutConnection
         return false;
       }
     }
@@ -604,8 +559,8 @@ class TextReader {
     if (toLowerAscii(t[1].text) != "key") {
       rep_.error(at(t[1]), "expected the word 'key' after KeyConnect, not " + quote(t[1].text));
       ok = false;
-    } else if (t[1].text != "key") {
-      keywordCase(t[1], "key");
+    } else {
+      keyword(t[1], "key");
     }
     long long key = 0;
     bool unknownKey = false;
@@ -614,16 +569,10 @@ class TextReader {
     const std::string dir = toLowerAscii(t[3].text);
     if (dir == "down" || dir == "up") {
       directions.push_back(dir == "down" ? KeyDirection::Down : KeyDirection::Up);
-      if (t[3].text != dir) keywordCase(t[3], dir);
-    } else if (dir == "ondown" || dir == "change") {
-      // Both programs ignore the word and perform the action on the press and on the release.
-      directions = {KeyDirection::Down, KeyDirection::Up};
-      rep_.lenient("key-direction:" + dir, at(t[3]),
-                   quote(t[3].text) + " is read as two connections, down and up: " +
-                       (dir == "ondown" ? std::string("ConfuddledPenguin/Gizmoball's reader ignores the word, and "
-                                                      "every key it registers acts on the press and on the release")
-                                        : std::string("jtax/Gizmoball-WJ2's reader ignores the word, and its key "
-                                                      "listener triggers on the press and on the release")));
+      keyword(t[3], dir);
+    } else if (const std::optional<DialectReading> r = readDialect(DialectStage::Direction, word(t[3]))) {
+      directions = {KeyDirection::Down, KeyDirection::Up};  // DialectOutcome::DownAndUp
+      warn(*r);
     } else {
       rep_.error(at(t[3]), "the key direction must be down or up, not " + quote(t[3].text));
       ok = false;
@@ -632,48 +581,44 @@ class TextReader {
     if (namesLeftOut(t[4], t[0])) return;
     const std::optional<std::string> target = end(t[4], false);
     if (!ok || !target) return;
+    std::optional<DialectReading> later;
+    if (target->empty() && !(later = laterName())) {
+      lookup(t[4], "gizmo");
+      return;
+    }
     for (const KeyDirection d : directions) {
       if (target->empty())
-        deferred_.push_back(Deferred{{}, std::string(t[4].text), static_cast<int>(key), d, at(t[0]), true});
+        deferred_.push_back(Deferred{{}, std::string(t[4].text), static_cast<int>(key), d, at(t[0]), true, *later});
       else
         addKeyConnect(KeyConnectSpec{static_cast<int>(key), d, *target, at(t[0])});
     }
   }
 
   void addKeyConnect(KeyConnectSpec k) {
-    const auto [it, inserted] =
-        keyIndex_.emplace(std::make_tuple(k.key, static_cast<int>(k.direction), k.target), keyConnections_.size());
-    if (!inserted) {
-      rep_.lenient("duplicate-connection", k.where,
-                   "this connection repeats the one on line " +
-                       std::to_string(keyConnections_[it->second].where.line) + "; the repetition is ignored");
-      return;
-    }
-    keyConnectionsOf_[k.target].push_back(keyConnections_.size());
-    keyConnections_.add(std::move(k));
+    const SourcePos where = k.where;
+    if (const KeyConnectSpec* first = edits_.keyConnect(std::move(k))) repeated(where, first->where);
   }
 
-  // Connections that named something not there at their line: made when it exists at the end of
-  // the file (a saver that wrote connections before gizmos), else ignored.
+  // Connections that named something not there at their line (DialectOutcome::MakeAtEnd): made
+  // when it exists at the end of the file, else ignored.
   void resolveDeferred() {
     for (Deferred& d : deferred_) {
       std::string missing;
       std::string source = d.source, target;
       if (!d.key) {
         if (source != kOuterWallsName) {
-          if (const auto it = names_.find(source); it != names_.end() && !it->second.ball) source = it->second.name;
+          if (const Ref* r = edits_.find(source); r && !r->ball) source = r->name;
           else missing = d.source;
         }
       }
-      if (const auto it = names_.find(d.target); it != names_.end() && !it->second.ball) target = it->second.name;
+      if (const Ref* r = edits_.find(d.target); r && !r->ball) target = r->name;
       else if (missing.empty()) missing = d.target;
       if (!missing.empty()) {
         rep_.lenient("connection-unknown", d.where,
                      "there is no gizmo named " + quote(missing) + " in the file; the connection is ignored");
         continue;
       }
-      rep_.lenient("connection-later", d.where,
-                   "this connection names a gizmo that is created further down; it is made at the end of the file");
+      rep_.lenient(d.later.kind, d.where, d.later.message);
       if (d.key)
         addKeyConnect(KeyConnectSpec{d.code, d.direction, target, d.where});
       else
@@ -727,10 +672,7 @@ class TextReader {
     board.gravity = gravity_;
     board.mu = mu_;
     board.mu2 = mu2_;
-    board.gizmos = gizmos_.takeLive();
-    board.balls = balls_.takeLive();
-    board.connections = connections_.takeLive();
-    board.keyConnections = keyConnections_.takeLive();
+    edits_.takeInto(board);
     if (!rep_.failed()) repairPlacements(board, rep_);
     for (SpecProblem& p : checkBoardSpec(board)) rep_.error(p.where, std::move(p.message));
     return board;
@@ -743,16 +685,14 @@ class TextReader {
     KeyDirection direction = KeyDirection::Down;
     SourcePos where;
     bool key = false;
+    DialectReading later;  // the dialect row that deferred it: its warning
   };
 
   std::string_view content_;
   Reporter& rep_;
   int line_ = 0;
 
-  EditedList<GizmoSpec> gizmos_;
-  EditedList<BallSpec> balls_;
-  std::unordered_map<std::string, Ref> names_;  // live objects by the name the file writes
-  std::unordered_set<std::string> taken_;       // the board names of live objects
+  BoardEdits edits_;  // what the file creates, as later lines edit it
   std::unordered_map<std::string, std::string> leftOut_;  // names of left-out additions → their word
   std::unordered_map<std::string, std::vector<std::size_t>> pending_;  // unresolved_ entries by name
   std::unordered_set<std::string> failed_;  // names whose statement failed: no second error about them
@@ -764,13 +704,6 @@ class TextReader {
   std::size_t commandLines_ = 0;         // lines that are commands of the format
   std::vector<Unresolved> unresolved_;
   std::vector<Deferred> deferred_;
-
-  EditedList<ConnectSpec> connections_;
-  std::map<std::pair<std::string, std::string>, std::size_t> connectionIndex_;  // live ones
-  std::unordered_map<std::string, std::vector<std::size_t>> connectionsOf_;
-  EditedList<KeyConnectSpec> keyConnections_;
-  std::map<std::tuple<int, int, std::string>, std::size_t> keyIndex_;
-  std::unordered_map<std::string, std::vector<std::size_t>> keyConnectionsOf_;
 
   double gravity_ = 25.0;
   double mu_ = 0.025;
