@@ -4,7 +4,7 @@
 // added to the list is tested here without a test of its own (docs/design.md, "Adding a gizmo").
 #include <gtest/gtest.h>
 
-#include <set>
+#include <ostream>
 #include <string>
 
 #include "gizmo/core/board/build_board.hpp"
@@ -24,6 +24,8 @@ struct KindCase {
   GizmoType type;
   std::string stem;
 };
+
+void PrintTo(const KindCase& k, std::ostream* os) { *os << k.stem; }
 
 std::vector<KindCase> everyKind() {
   std::vector<KindCase> kinds;

@@ -23,7 +23,16 @@ struct GizmoKindInfo {
   std::string_view handedness;   // "left", "right", or empty
 };
 
+// Every kind's file holds what CoreKindEntry asks for; the message names the kind and its file.
+#define GIZMO_KIND_IS_COMPLETE(Name, stem)                                                      \
+  static_assert(CoreKindEntry<KindCore<GizmoType::Name>>,                                      \
+                "kind " #Name ": core/include/gizmo/core/kinds/" #stem ".hpp lacks part of what " \
+                "CoreKindEntry (kinds/kind_core.hpp) asks of a kind's core file");
+GIZMO_KINDS(GIZMO_KIND_IS_COMPLETE)
+#undef GIZMO_KIND_IS_COMPLETE
+
 template <GizmoType T>
+  requires CoreKindEntry<KindCore<T>>
 constexpr GizmoKindInfo kindInfoOf() {
   using K = KindCore<T>;
   return {T, K::textCommand, K::textUsage, K::xmlElement, K::word, K::drawing, K::side, K::disc, K::handedness};
@@ -37,8 +46,10 @@ inline constexpr std::array<GizmoKindInfo, kGizmoTypeCount> kGizmoKinds = {
 #undef GIZMO_KIND_ROW
 };
 
-// The kinds of the Gizmoball format itself, before the additions of other programs.
-constexpr bool isStandardKind(GizmoType type) { return static_cast<int>(type) < static_cast<int>(GizmoType::Booster); }
+// The kinds of the Gizmoball format itself, the first six lines of the kind list, before the
+// additions of other programs.
+inline constexpr int kStandardKindCount = 6;
+constexpr bool isStandardKind(GizmoType type) { return static_cast<int>(type) < kStandardKindCount; }
 
 // The row of a kind. Every GizmoType has one (checked at compile time below).
 constexpr const GizmoKindInfo& gizmoKind(GizmoType type) { return kGizmoKinds[static_cast<int>(type)]; }
