@@ -20,6 +20,7 @@ struct GizmoKindInfo {
   std::string_view drawing;      // the drawings' class ("left-flipper")
   int side;                      // ownSide's
   bool disc;                     // isDiscGizmo's
+  bool xmlOrientationAlways;     // the XML writer writes its orientation when it is 0 too
   std::string_view handedness;   // "left", "right", or empty
 };
 
@@ -35,7 +36,7 @@ template <GizmoType T>
   requires CoreKindEntry<KindCore<T>>
 constexpr GizmoKindInfo kindInfoOf() {
   using K = KindCore<T>;
-  return {T, K::textCommand, K::textUsage, K::xmlElement, K::word, K::drawing, K::side, K::disc, K::handedness};
+  return {T, K::textCommand, K::textUsage, K::xmlElement, K::word, K::drawing, K::side, K::disc, K::xmlOrientationAlways, K::handedness};
 }
 
 // In GizmoType's order. Booster and after are other programs' additions, spelled as the programs

@@ -16,6 +16,7 @@ struct KindCore<GizmoType::Absorber> {
   static constexpr std::string_view drawing = "absorber";
   static constexpr int side = 0;  // its box is what its file says
   static constexpr bool disc = false;
+  static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
   static constexpr auto rules = std::array<ModelRule, 2>{ModelRule::Captured, ModelRule::Released};
 

@@ -43,6 +43,9 @@ concept CoreKindEntry = requires(Shape<double>& shape, const GizmoSpec& spec) {
   { K::side } -> std::convertible_to<int>;
   // A disc of radius 0.5 in its cell (the pictures and the fuzz checker draw and test it so).
   { K::disc } -> std::convertible_to<bool>;
+  // Whether the XML writer writes its orientation attribute when it is 0 too (as the programs
+  // that write the element do); otherwise only when it is not 0.
+  { K::xmlOrientationAlways } -> std::convertible_to<bool>;
   // Its handedness property ("left", "right"), empty for a kind without one.
   { K::handedness } -> std::convertible_to<std::string_view>;
   // The model rules (board/model_rule.hpp) that only this kind records.

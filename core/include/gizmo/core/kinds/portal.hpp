@@ -16,6 +16,7 @@ struct KindCore<GizmoType::Portal> {
   static constexpr std::string_view drawing = "portal";
   static constexpr int side = 1;
   static constexpr bool disc = true;
+  static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
   static constexpr auto rules = std::array<ModelRule, 0>{};
 

@@ -16,6 +16,7 @@ struct KindCore<GizmoType::RightFlipper> {
   static constexpr std::string_view drawing = "right-flipper";
   static constexpr int side = 2;
   static constexpr bool disc = false;
+  static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "right";
   static constexpr auto rules = std::array<ModelRule, 1>{ModelRule::FlipperBlocked};
 

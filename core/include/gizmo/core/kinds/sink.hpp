@@ -16,6 +16,7 @@ struct KindCore<GizmoType::Sink> {
   static constexpr std::string_view drawing = "sink";
   static constexpr int side = 1;
   static constexpr bool disc = false;
+  static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "";
   static constexpr auto rules = std::array<ModelRule, 1>{ModelRule::Sunk};
 

@@ -16,6 +16,7 @@ struct KindCore<GizmoType::Spawner> {
   static constexpr std::string_view drawing = "spawner";
   static constexpr int side = 1;
   static constexpr bool disc = false;
+  static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
   static constexpr auto rules = std::array<ModelRule, 2>{ModelRule::Spawned, ModelRule::SpawnBlocked};
 

@@ -16,6 +16,7 @@ struct KindCore<GizmoType::Spinner> {
   static constexpr std::string_view drawing = "spinner";
   static constexpr int side = 2;
   static constexpr bool disc = false;
+  static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
   static constexpr auto rules = std::array<ModelRule, 1>{ModelRule::SpinnerBlocked};
 

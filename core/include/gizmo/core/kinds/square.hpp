@@ -15,6 +15,7 @@ struct KindCore<GizmoType::Square> {
   static constexpr std::string_view drawing = "square";
   static constexpr int side = 1;
   static constexpr bool disc = false;
+  static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
   static constexpr auto rules = std::array<ModelRule, 0>{};
 

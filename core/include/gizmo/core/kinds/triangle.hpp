@@ -16,6 +16,7 @@ struct KindCore<GizmoType::Triangle> {
   static constexpr std::string_view drawing = "triangle";
   static constexpr int side = 1;
   static constexpr bool disc = false;
+  static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "";
   static constexpr auto rules = std::array<ModelRule, 0>{};
 
