@@ -3,6 +3,7 @@
 
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmo_kinds.hpp"
+#include "kinds/drawing_registry.hpp"
 
 namespace gizmo::cli {
 
@@ -23,7 +24,8 @@ BoardDrawing drawingOf(const BoardSpec& board) {
     d.name = g.name;
     d.type = g.type;
     const Shape<double> shape = restShape<double>(g);
-    if (g.type == GizmoType::LeftFlipper || g.type == GizmoType::RightFlipper) {
+    const Figure figure = figureOf(g.type);  // each kind's drawing file says (cli/kinds/STEM.hpp)
+    if (figure == Figure::Flipper) {
       const FlipperLayout layout = flipperLayout(g.type, g.orientation);
       d.pivot = Vec2<double>(g.x + layout.pivot.x, g.y + layout.pivot.y);
       d.restQuarter = layout.restQuarter;
@@ -31,15 +33,15 @@ BoardDrawing drawingOf(const BoardSpec& board) {
       d.forwardSign = layout.forwardSign;
       d.length = kFlipperLength;
       d.radius = kFlipperRadius;
-    } else if (isDiscGizmo(g.type)) {
+    } else if (figure == Figure::Disc) {
       d.centre = shape.circles.front().centre;
       d.radius = shape.circles.front().radius;
-    } else if (g.type == GizmoType::Spinner) {
+    } else if (figure == Figure::Cross) {
       d.centre = Vec2<double>(g.x + 1, g.y + 1);
       d.length = kSpinnerArmLength;
       d.radius = kSpinnerArmRadius;
       d.rate = kSpinnerTurnRate;
-    } else if (g.type == GizmoType::Spawner) {
+    } else if (figure == Figure::CellOutline) {
       // Nothing meets it: its cell is drawn as an outline.
       d.polygon = {Vec2<double>(g.x, g.y), Vec2<double>(g.x + 1, g.y), Vec2<double>(g.x + 1, g.y + 1),
                    Vec2<double>(g.x, g.y + 1)};
@@ -56,17 +58,18 @@ nlohmann::ordered_json drawingJson(const BoardDrawing& drawing) {
   nlohmann::ordered_json gizmos = nlohmann::ordered_json::array();
   for (const GizmoDrawing& d : drawing.gizmos) {
     nlohmann::ordered_json g{{"name", d.name}, {"type", drawingTypeName(d.type)}};
-    if (d.type == GizmoType::LeftFlipper || d.type == GizmoType::RightFlipper) {
+    const Figure figure = figureOf(d.type);
+    if (figure == Figure::Flipper) {
       g["pivot"] = point(d.pivot);
       g["rest_quarter"] = d.restQuarter;
       g["end_quarter"] = d.endQuarter;
       g["forward_sign"] = d.forwardSign;
       g["length"] = d.length;
       g["radius"] = d.radius;
-    } else if (isDiscGizmo(d.type)) {
+    } else if (figure == Figure::Disc) {
       g["centre"] = point(d.centre);
       g["radius"] = d.radius;
-    } else if (d.type == GizmoType::Spinner) {
+    } else if (figure == Figure::Cross) {
       g["centre"] = point(d.centre);
       g["length"] = d.length;
       g["radius"] = d.radius;

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <set>
 
+#include "kinds/drawing_registry.hpp"
+
 namespace gizmo::cli {
 namespace {
 
@@ -46,35 +48,34 @@ Vec2<double> quarter(int q) {
 
 std::string gizmoSvg(const GizmoDrawing& g) {
   const std::string title = "<title>" + escapeXml(g.name) + "</title>";
-  switch (g.type) {
-    case GizmoType::Circle:
-    case GizmoType::Teleporter:
-    case GizmoType::Portal:
-      return std::string("<circle class=\"") + drawingTypeName(g.type) + "\" cx=\"" + num(g.centre.x) + "\" cy=\"" + num(g.centre.y) + "\" r=\"" +
+  switch (figureOf(g.type)) {  // each kind's drawing file says (cli/kinds/STEM.hpp)
+    case Figure::Disc:
+      return std::string("<circle class=\"") + svgClassOf(g.type) + "\" cx=\"" + num(g.centre.x) + "\" cy=\"" + num(g.centre.y) + "\" r=\"" +
              num(g.radius) + "\">" + title + "</circle>\n";
-    case GizmoType::LeftFlipper:
-    case GizmoType::RightFlipper: {
+    case Figure::Flipper: {
       const Vec2<double> tip = g.pivot + g.length * quarter(g.restQuarter);
-      return "<line class=\"flipper\" stroke-width=\"" + num(2 * g.radius) + "\" x1=\"" + num(g.pivot.x) + "\" y1=\"" +
+      return std::string("<line class=\"") + svgClassOf(g.type) + "\" stroke-width=\"" + num(2 * g.radius) + "\" x1=\"" + num(g.pivot.x) + "\" y1=\"" +
              num(g.pivot.y) + "\" x2=\"" + num(tip.x) + "\" y2=\"" + num(tip.y) + "\">" + title + "</line>\n";
     }
-    case GizmoType::Spinner: {
+    case Figure::Cross: {
       // The cross at rest: two bars through the centre (a picture of the board, not of a moment).
       std::string bars;
       for (int q = 0; q < 2; ++q) {
         const Vec2<double> a = g.centre - g.length * quarter(q), b = g.centre + g.length * quarter(q);
-        bars += "<line class=\"spinner\" stroke-width=\"" + num(2 * g.radius) + "\" x1=\"" + num(a.x) + "\" y1=\"" + num(a.y) +
+        bars += std::string("<line class=\"") + svgClassOf(g.type) + "\" stroke-width=\"" + num(2 * g.radius) + "\" x1=\"" + num(a.x) + "\" y1=\"" + num(a.y) +
                 "\" x2=\"" + num(b.x) + "\" y2=\"" + num(b.y) + "\">" + title + "</line>\n";
       }
       return bars;
     }
-    default: {
+    case Figure::Polygon:
+    case Figure::CellOutline: {
       std::string points;
       for (const Vec2<double>& p : g.polygon) points += (points.empty() ? "" : " ") + pt(p);
-      return std::string("<polygon class=\"") + drawingTypeName(g.type) + "\" points=\"" + points + "\">" + title +
+      return std::string("<polygon class=\"") + svgClassOf(g.type) + "\" points=\"" + points + "\">" + title +
              "</polygon>\n";
     }
   }
+  return {};  // not reached: every figure is a case
 }
 
 // One ball's path: each piece is a parabola (or a line), which a quadratic Bézier draws exactly:

@@ -16,6 +16,9 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/ ${PROJECT_SOURCE_DIR}/core
                   ${PROJECT_SOURCE_DIR}/replay/include/
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
   FILES_MATCHING PATTERN "*.hpp")
+# and the core's generated header of every kind's file (cmake/GizmoKinds.cmake).
+install(FILES ${GIZMO_GENERATED_DIR}/core/gizmo/core/kinds/all_kinds.hpp
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/gizmo/core/kinds)
 
 install(EXPORT gizmoTargets
   NAMESPACE gizmo::

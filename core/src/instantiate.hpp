@@ -2,6 +2,7 @@
 // The core's templates, compiled once per scalar: each instantiate_*.cpp names one scalar.
 #include <cfloat>
 #include "board/build_board_impl.hpp"
+#include "kind_outline_impl.hpp"
 #include "board/game_board_building_impl.hpp"
 #include "board/game_board_loop_impl.hpp"
 #include "board/game_board_predict_impl.hpp"
@@ -17,4 +18,5 @@ static_assert(FLT_EVAL_METHOD == 0, "float and double must be evaluated in their
   namespace gizmo {                                                                      \
   template class GameBoard<Real>;                                                        \
   template std::unique_ptr<GameBoard<Real>> buildBoard<Real>(const BoardSpec&, PhysicsParams<Real>); \
+  template Shape<Real> restShape<Real>(const GizmoSpec&);                                \
   }

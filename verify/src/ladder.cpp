@@ -5,6 +5,7 @@
 
 #include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/verify/certify.hpp"
+#include "kinds/verify_registry.hpp"
 #include "trace.hpp"
 
 namespace gizmo::verify {
@@ -19,13 +20,11 @@ SceneArithmetic sceneArithmetic(const RunRequest& request) {
     s.reason = "mu2 is not 0: the friction law needs the speed |v|, a square root";
     return s;
   }
+  // A kind the exact run cannot take says why in its own file (verify/src/kinds/STEM.hpp).
   for (const GizmoSpec& g : request.board.gizmos) {
-    if (g.type == GizmoType::Triangle || g.type == GizmoType::Booster) {
-      s.reason = std::string(gizmoTypeWord(g.type)) + " " + g.name + " has a 45-degree edge, whose unit normal (sqrt(2)/2) is irrational";
-      return s;
-    }
-    if (g.type == GizmoType::Spinner) {
-      s.reason = "spinner " + g.name + " turns through angles whose sines and cosines are irrational";
+    const std::string_view refusal = verifyFact(g.type, [](auto k) { return k.exactRunRefusal; });
+    if (!refusal.empty()) {
+      s.reason = std::string(gizmoTypeWord(g.type)) + " " + g.name + " " + std::string(refusal);
       return s;
     }
   }

@@ -46,25 +46,13 @@ std::string writeXmlBoard(const BoardSpec& board) {
   for (const GizmoSpec& g : board.gizmos) {
     out += std::string("    <") + gizmoKind(g.type).xmlElement.data() + attr("name", xmlEscaped(g.name)) +
            attr("x", std::to_string(g.x)) + attr("y", std::to_string(g.y));
-    switch (g.type) {
-      case GizmoType::Absorber:
-        out += attr("width", std::to_string(g.width)) + attr("height", std::to_string(g.height));
-        if (g.orientation != 0) out += attr("orientation", std::to_string(g.orientation));
-        break;
-      case GizmoType::Portal:
-        out += attr("exitX", std::to_string(g.exitX)) + attr("exitY", std::to_string(g.exitY));
-        if (g.orientation != 0) out += attr("orientation", std::to_string(g.orientation));
-        break;
-      case GizmoType::Square:
-      case GizmoType::Circle:
-      case GizmoType::Teleporter:
-      case GizmoType::Spinner:
-      case GizmoType::Spawner:
-        if (g.orientation != 0) out += attr("orientation", std::to_string(g.orientation));
-        break;
-      default:
-        out += attr("orientation", std::to_string(g.orientation));
-    }
+    if (g.type == GizmoType::Absorber)
+      out += attr("width", std::to_string(g.width)) + attr("height", std::to_string(g.height));
+    if (g.type == GizmoType::Portal)
+      out += attr("exitX", std::to_string(g.exitX)) + attr("exitY", std::to_string(g.exitY));
+    // Whether a 0 orientation is written too is each kind's (kinds/STEM.hpp, xmlOrientationAlways).
+    if (g.orientation != 0 || gizmoKind(g.type).xmlOrientationAlways)
+      out += attr("orientation", std::to_string(g.orientation));
     out += "/>\n";
   }
   out += "  </gizmos>\n";

@@ -3,13 +3,8 @@
 #include <stdexcept>
 
 #include "gizmo/core/board/build_board.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
-#include "gizmo/core/gizmos/booster.hpp"
-#include "gizmo/core/gizmos/flipper.hpp"
-#include "gizmo/core/gizmos/polygonal_gizmo.hpp"
-#include "gizmo/core/gizmos/sink.hpp"
-#include "gizmo/core/gizmos/spawner.hpp"
-#include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
 
 namespace gizmo {
@@ -22,39 +17,12 @@ std::unique_ptr<GameBoard<Real>> buildBoard(const BoardSpec& spec, PhysicsParams
   auto board = std::make_unique<GameBoard<Real>>(params);
   std::vector<Absorber<Real>*> absorbers;
   for (const GizmoSpec& g : spec.gizmos) {
-    switch (g.type) {
-      case GizmoType::Square:
-      case GizmoType::Circle:
-      case GizmoType::Triangle:
-        board->add(std::make_unique<GridBumper<Real>>(g));
-        break;
-      case GizmoType::Booster:
-        board->add(std::make_unique<Booster<Real>>(g));
-        break;
-      case GizmoType::Teleporter:
-      case GizmoType::Portal:
-        board->add(std::make_unique<Teleporter<Real>>(g));
-        break;
-      case GizmoType::Sink:
-        board->add(std::make_unique<Sink<Real>>(g));
-        break;
-      case GizmoType::LeftFlipper:
-      case GizmoType::RightFlipper:
-        board->add(std::make_unique<Flipper<Real>>(g));
-        break;
-      case GizmoType::Spinner:
-        board->add(std::make_unique<Spinner<Real>>(g));
-        break;
-      case GizmoType::Spawner:
-        board->add(std::make_unique<Spawner<Real>>(g));
-        break;
-      case GizmoType::Absorber: {
-        auto a = std::make_unique<Absorber<Real>>(g);
-        absorbers.push_back(a.get());
-        board->add(std::move(a));
-        break;
-      }
-    }
+    // Each kind's file says which gizmo the board builds for it (kinds/STEM.hpp, build).
+    std::unique_ptr<AbstractGizmo<Real>> gizmo =
+        visitKind(g.type, [&]<GizmoType T>(KindTag<T>) { return KindCore<T>::template build<Real>(g); });
+    // A ball at rest inside an absorber is held from the start (below).
+    if (auto* absorber = dynamic_cast<Absorber<Real>*>(gizmo.get())) absorbers.push_back(absorber);
+    board->add(std::move(gizmo));
   }
   for (const BallSpec& b : spec.balls) {
     auto ball = std::make_unique<Ball<Real>>(b.name, Vec2<Real>(fromDouble<Real>(b.x), fromDouble<Real>(b.y)),

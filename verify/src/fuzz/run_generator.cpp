@@ -10,6 +10,7 @@
 #include "gizmo/core/cell_occupancy.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/verify/fuzz/seeded_random.hpp"
+#include "kinds/verify_registry.hpp"
 
 namespace gizmo::verify::fuzz {
 namespace {
@@ -60,41 +61,24 @@ struct Builder {
   }
 
   // The additions of other programs (docs/physics.md, "Gizmos other programs added") take the
-  // place of gizmos of the same outline: half the triangles become boosters, half the circles
-  // teleporters, a quarter of the squares sinks, a third of the teleporters portals, each with
-  // an exit cell anywhere on the board, a third of the flippers spinners and a third of the sinks
-  // spawners (each drawn after the ones before, so that boards without squares, teleporters or
-  // flippers keep what came before; a spinner keeps the key connection its flipper was given, and
-  // a spawner is given one, so that it spawns). The choice is drawn
-  // from a stream of its own, so that every other draw, and every board without a triangle,
-  // stays what it was before the additions.
+  // place of gizmos of the same outline: each kind's verify file says which kind it converts and
+  // with what chance (verify/src/kinds/STEM.hpp). The conversions run in the kind list's order,
+  // each drawn after the ones before, so that boards without squares, teleporters or flippers keep
+  // what came before. The choice is drawn from a stream of its own, so that every other draw, and
+  // every board without a triangle, stays what it was before the additions.
   void additions(std::uint64_t seed) {
     SeededRandom own(seed ^ 0x6164646974696f6eULL);  // "addition"
-    for (GizmoSpec& g : board.gizmos)
-      if (g.type == GizmoType::Triangle && own.chance(2)) g.type = GizmoType::Booster;
-    // half the circles become teleporters, most of them with an exit (now and then themselves)
-    for (GizmoSpec& g : board.gizmos)
-      if (g.type == GizmoType::Circle && own.chance(2)) g.type = GizmoType::Teleporter;
-    std::vector<const GizmoSpec*> teleporters;
-    for (const GizmoSpec& g : board.gizmos)
-      if (g.type == GizmoType::Teleporter) teleporters.push_back(&g);
-    for (const GizmoSpec* from : teleporters)
-      if (!own.chance(5)) {
-        const GizmoSpec* to = teleporters[std::size_t(own.whole(0, int(teleporters.size()) - 1))];
-        board.connections.push_back(ConnectSpec{from->name, to->name, {}});
+    forEachKind([&]<GizmoType T>(KindTag<T>) {
+      using K = KindVerify<T>;
+      if constexpr (K::generatedByConversion) {
+        for (GizmoSpec& g : board.gizmos)
+          if (K::convertsFrom(g.type) && own.chance(K::oneIn)) {
+            g.type = T;
+            K::converted(g, own);
+          }
+        K::afterConversions(board, own);
       }
-    for (GizmoSpec& g : board.gizmos)
-      if (g.type == GizmoType::Square && own.chance(4)) g.type = GizmoType::Sink;
-    for (GizmoSpec& g : board.gizmos)
-      if (g.type == GizmoType::Teleporter && own.chance(3)) {
-        g.type = GizmoType::Portal;
-        g.exitX = own.whole(0, kBoardSize - 1);
-        g.exitY = own.whole(0, kBoardSize - 1);
-      }
-    for (GizmoSpec& g : board.gizmos)
-      if (isFlipper(g.type) && own.chance(3)) g.type = GizmoType::Spinner;
-    for (GizmoSpec& g : board.gizmos)
-      if (g.type == GizmoType::Sink && own.chance(3)) g.type = GizmoType::Spawner;
+    });
   }
 
   void connections() {
@@ -108,7 +92,7 @@ struct Builder {
                                        [&](const ConnectSpec& c) { return c.source == source && c.target == g.name; });
         if (!twice) board.connections.push_back(ConnectSpec{source, g.name, {}});
       }
-      const bool keyed = isFlipper(g.type) || g.type == GizmoType::Spinner || g.type == GizmoType::Spawner;
+      const bool keyed = verifyFact(g.type, [](auto k) { return k.alwaysKeyed; });
       if (rng.chance(3) || keyed) keyConnect(g.name, rng.whole(0, 1) ? KeyDirection::Down : KeyDirection::Up);
     }
   }
@@ -156,10 +140,8 @@ struct Builder {
     b.name = "B" + std::to_string(index);
     switch (rng.whole(0, 9)) {
       case 0: {  // aimed exactly at a corner of a square, triangle or absorber
-        const GizmoSpec* g = pickGizmo([](const GizmoSpec& s) {
-          return s.type == GizmoType::Square || s.type == GizmoType::Triangle || s.type == GizmoType::Absorber ||
-                 s.type == GizmoType::Booster || s.type == GizmoType::Sink;
-        });
+        const GizmoSpec* g =
+            pickGizmo([](const GizmoSpec& s) { return verifyFact(s.type, [](auto k) { return k.aimedAtCorner; }); });
         if (!g) break;
         const double cx = g->x + (rng.whole(0, 1) ? g->width : 0), cy = g->y + (rng.whole(0, 1) ? g->height : 0);
         const int dx = rng.whole(-2, 2), dy = rng.whole(-2, 2);
@@ -171,7 +153,8 @@ struct Builder {
         return 1;
       }
       case 1: {  // grazing a horizontal edge of a gizmo's cell: centre exactly one radius off it
-        const GizmoSpec* g = pickGizmo([](const GizmoSpec& s) { return s.type != GizmoType::Circle; });
+        const GizmoSpec* g =
+            pickGizmo([](const GizmoSpec& s) { return verifyFact(s.type, [](auto k) { return k.grazedAlongEdge; }); });
         if (!g) break;
         const bool above = rng.whole(0, 1);
         b.y = above ? g->y - kBallRadius : g->y + g->height + kBallRadius;
@@ -194,8 +177,8 @@ struct Builder {
         return 2;
       }
       case 3: {  // resting on a top surface: the floor, or the top of a square or an absorber
-        const GizmoSpec* g = pickGizmo(
-            [](const GizmoSpec& s) { return s.type == GizmoType::Square || s.type == GizmoType::Absorber; });
+        const GizmoSpec* g =
+            pickGizmo([](const GizmoSpec& s) { return verifyFact(s.type, [](auto k) { return k.restedOnTop; }); });
         if (!g || rng.chance(3)) {
           b.x = rng.whole(1, 19) + 0.5 * rng.whole(0, 1), b.y = kBoardSize - kBallRadius;
         } else {
@@ -206,9 +189,8 @@ struct Builder {
         return 1;
       }
       case 4: {  // touching a flipper at rest, beside its pivot or its tip
-        const GizmoSpec* g = pickGizmo([](const GizmoSpec& s) {
-          return s.type == GizmoType::LeftFlipper || s.type == GizmoType::RightFlipper;
-        });
+        const GizmoSpec* g = pickGizmo(
+            [](const GizmoSpec& s) { return verifyFact(s.type, [](auto k) { return k.touchedBesideCapsule; }); });
         if (!g) break;
         // The rest capsule runs from the pivot centre 1.5 L along its rest direction; a ball beside
         // it, its centre 0.5 from the axis, touches it exactly.

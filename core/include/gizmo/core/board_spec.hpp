@@ -7,12 +7,18 @@
 #include <string>
 #include <vector>
 
+#include "gizmo/core/kinds/kind_list.hpp"
+
 namespace gizmo {
 
-// Booster and later entries: gizmos that other Gizmoball programs added (docs/physics.md,
-// "Gizmos other programs added").
-enum class GizmoType { Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal,
-                       Spinner, Spawner };
+// One enumerator per line of the kind list, in its order (kinds/kind_list.hpp). Booster and later
+// entries: gizmos that other Gizmoball programs added (docs/physics.md, "Gizmos other programs added").
+#define GIZMO_KIND_ENUMERATOR(Name, stem) Name,
+enum class GizmoType { GIZMO_KINDS(GIZMO_KIND_ENUMERATOR) };
+#undef GIZMO_KIND_ENUMERATOR
+#define GIZMO_KIND_COUNT(Name, stem) +1
+inline constexpr int kGizmoTypeCount = 0 GIZMO_KINDS(GIZMO_KIND_COUNT);
+#undef GIZMO_KIND_COUNT
 enum class KeyDirection { Down, Up };
 
 // Where a statement came from in its file (1-based; 0 when it was not read from a file).
@@ -35,16 +41,9 @@ struct GizmoSpec {
 };
 
 // The side of a gizmo's square box in L: 2 for flippers and spinners, 1 for the bumpers. An
-// absorber's box is what its file says (0 here).
-inline int ownSide(GizmoType t) {
-  switch (t) {
-    case GizmoType::LeftFlipper:
-    case GizmoType::RightFlipper:
-    case GizmoType::Spinner: return 2;
-    case GizmoType::Absorber: return 0;
-    default: return 1;
-  }
-}
+// absorber's box is what its file says (0 here). Each kind's file says it (kinds/STEM.hpp, `side`);
+// defined in core/src/kind_registry.cpp, where every kind's file is included.
+int ownSide(GizmoType t);
 
 struct BallSpec {
   std::string name;

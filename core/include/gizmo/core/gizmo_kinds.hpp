@@ -1,11 +1,13 @@
 #pragma once
 // What the board files, the messages and the drawings call each kind of gizmo, in one table: one
 // row per kind, which the readers, the writers, the board check and the drawings look up instead
-// of each keeping a switch of its own. A new kind is a new GizmoType and a new row here (its box
-// side is ownSide's, in board_spec.hpp).
+// of each keeping a switch of its own. The rows are read from the kinds' own files
+// (kinds/STEM.hpp), in the order of the kind list (kinds/kind_list.hpp).
+#include <array>
 #include <string_view>
 
 #include "gizmo/core/board_spec.hpp"
+#include "gizmo/core/kinds/all_kinds.hpp"  // generated from the kind list by cmake/GizmoKinds.cmake
 
 namespace gizmo {
 
@@ -16,27 +18,39 @@ struct GizmoKindInfo {
   std::string_view xmlElement;   // the XML format's element ("leftFlipper")
   std::string_view word;         // in messages ("left flipper")
   std::string_view drawing;      // the drawings' class ("left-flipper")
+  int side;                      // ownSide's
+  bool disc;                     // isDiscGizmo's
+  bool xmlOrientationAlways;     // the XML writer writes its orientation when it is 0 too
+  std::string_view handedness;   // "left", "right", or empty
 };
+
+// Every kind's file holds what CoreKindEntry asks for; the message names the kind and its file.
+#define GIZMO_KIND_IS_COMPLETE(Name, stem)                                                      \
+  static_assert(CoreKindEntry<KindCore<GizmoType::Name>>,                                      \
+                "kind " #Name ": core/include/gizmo/core/kinds/" #stem ".hpp lacks part of what " \
+                "CoreKindEntry (kinds/kind_core.hpp) asks of a kind's core file");
+GIZMO_KINDS(GIZMO_KIND_IS_COMPLETE)
+#undef GIZMO_KIND_IS_COMPLETE
+
+template <GizmoType T>
+  requires CoreKindEntry<KindCore<T>>
+constexpr GizmoKindInfo kindInfoOf() {
+  using K = KindCore<T>;
+  return {T, K::textCommand, K::textUsage, K::xmlElement, K::word, K::drawing, K::side, K::disc, K::xmlOrientationAlways, K::handedness};
+}
 
 // In GizmoType's order. Booster and after are other programs' additions, spelled as the programs
 // that invented them spell them (docs/board-files.md §2).
-inline constexpr GizmoKindInfo kGizmoKinds[] = {
-    {GizmoType::Square, "Square", "Square NAME X Y", "squareBumper", "square", "square"},
-    {GizmoType::Circle, "Circle", "Circle NAME X Y", "circleBumper", "circle", "circle"},
-    {GizmoType::Triangle, "Triangle", "Triangle NAME X Y", "triangleBumper", "triangle", "triangle"},
-    {GizmoType::LeftFlipper, "LeftFlipper", "LeftFlipper NAME X Y", "leftFlipper", "left flipper", "left-flipper"},
-    {GizmoType::RightFlipper, "RightFlipper", "RightFlipper NAME X Y", "rightFlipper", "right flipper", "right-flipper"},
-    {GizmoType::Absorber, "Absorber", "Absorber NAME X1 Y1 X2 Y2", "absorber", "absorber", "absorber"},
-    {GizmoType::Booster, "Booster", "Booster NAME X Y", "booster", "booster", "booster"},
-    {GizmoType::Teleporter, "Teleporter", "Teleporter NAME X Y", "teleporter", "teleporter", "teleporter"},
-    {GizmoType::Sink, "Sink", "Sink NAME X Y", "sink", "sink", "sink"},
-    {GizmoType::Portal, "Portal", "Portal NAME X Y EXITX EXITY", "portal", "portal", "portal"},
-    {GizmoType::Spinner, "Spinner", "Spinner NAME X Y", "spinner", "spinner", "spinner"},
-    {GizmoType::Spawner, "Spawner", "Spawner NAME X Y", "spawner", "spawner", "spawner"},
+inline constexpr std::array<GizmoKindInfo, kGizmoTypeCount> kGizmoKinds = {
+#define GIZMO_KIND_ROW(Name, stem) kindInfoOf<GizmoType::Name>(),
+    GIZMO_KINDS(GIZMO_KIND_ROW)
+#undef GIZMO_KIND_ROW
 };
 
-// The kinds of the Gizmoball format itself, before the additions of other programs.
-constexpr bool isStandardKind(GizmoType type) { return static_cast<int>(type) < static_cast<int>(GizmoType::Booster); }
+// The kinds of the Gizmoball format itself, the first six lines of the kind list, before the
+// additions of other programs.
+inline constexpr int kStandardKindCount = 6;
+constexpr bool isStandardKind(GizmoType type) { return static_cast<int>(type) < kStandardKindCount; }
 
 // The row of a kind. Every GizmoType has one (checked at compile time below).
 constexpr const GizmoKindInfo& gizmoKind(GizmoType type) { return kGizmoKinds[static_cast<int>(type)]; }
@@ -44,7 +58,7 @@ constexpr const GizmoKindInfo& gizmoKind(GizmoType type) { return kGizmoKinds[st
 constexpr bool kindsInTypeOrder() {
   for (int i = 0; i < static_cast<int>(std::size(kGizmoKinds)); ++i)
     if (static_cast<int>(kGizmoKinds[i].type) != i) return false;
-  return static_cast<int>(std::size(kGizmoKinds)) == static_cast<int>(GizmoType::Spawner) + 1;
+  return true;
 }
 static_assert(kindsInTypeOrder(), "kGizmoKinds must hold one row per GizmoType, in its order");
 

@@ -86,58 +86,16 @@ Vec2<Real> quarterDirection(int q) {
   }
 }
 
-// The shape of a gizmo at rest (flippers in their rest position), in board coordinates.
-// The gizmos that are a disc of radius 0.5 in their cell.
-inline bool isDiscGizmo(GizmoType t) {
-  return t == GizmoType::Circle || t == GizmoType::Teleporter || t == GizmoType::Portal;
-}
-
+// The shape of a gizmo at rest (flippers in their rest position), in board coordinates: each
+// kind's file says its own (kinds/STEM.hpp, addRestShape). Defined in core/src/kind_outline_impl.hpp
+// and compiled once per scalar with the core (core/src/instantiate.hpp), where every kind's file
+// is included: a kind's file includes its gizmo's class, which needs this declaration.
 template <class Real>
-Shape<Real> restShape(const GizmoSpec& g) {
-  Shape<Real> s;
-  const Vec2<Real> o(Real(g.x), Real(g.y));
-  auto at = [&](double dx, double dy) { return o + Vec2<Real>(fromDouble<Real>(dx), fromDouble<Real>(dy)); };
-  switch (g.type) {
-    case GizmoType::Square:
-    case GizmoType::Sink:
-      addPolygon(s, {at(0, 0), at(1, 0), at(1, 1), at(0, 1)});
-      break;
-    case GizmoType::Triangle:
-    case GizmoType::Booster: {
-      // A booster at rest has its right angle at the lower left (d-g-n/CS308-GizmoBall's
-      // BoosterGizmo.java): the triangle turned three quarters.
-      const Vec2<Real> c = at(0.5, 0.5);
-      const int k = g.orientation / 90 + (g.type == GizmoType::Booster ? 3 : 0);
-      addPolygon(s, {rotateQuarterTurns(at(0, 0), c, k), rotateQuarterTurns(at(1, 0), c, k),
-                     rotateQuarterTurns(at(0, 1), c, k)});
-      break;
-    }
-    case GizmoType::Circle:
-    case GizmoType::Teleporter:
-    case GizmoType::Portal:
-      s.circles.push_back(CircleFeature<Real>{at(0.5, 0.5), fromDouble<Real>(0.5)});
-      break;
-    case GizmoType::Absorber:
-      addPolygon(s, {at(0, 0), at(g.width, 0), at(g.width, g.height), at(0, g.height)});
-      break;
-    case GizmoType::Spawner:  // nothing meets it: balls pass through its cell
-      break;
-    case GizmoType::Spinner: {
-      // A cross looks the same turned by any whole quarter: the orientation changes nothing.
-      addSpinnerCross(s, at(1, 1), Vec2<Real>(Real(1), Real(0)));
-      break;
-    }
-    case GizmoType::LeftFlipper:
-    case GizmoType::RightFlipper: {
-      const FlipperLayout f = flipperLayout(g.type, g.orientation);
-      const Vec2<Real> pivot = at(f.pivot.x, f.pivot.y);
-      const Vec2<Real> tip = pivot + fromDouble<Real>(kFlipperLength) * quarterDirection<Real>(f.restQuarter);
-      addCapsule(s, pivot, tip, fromDouble<Real>(kFlipperRadius));
-      break;
-    }
-  }
-  return s;
-}
+Shape<Real> restShape(const GizmoSpec& g);
+
+// The gizmos that are a disc of radius 0.5 in their cell (each kind's `disc`). Defined in
+// core/src/kind_registry.cpp.
+bool isDiscGizmo(GizmoType t);
 
 // The outer walls: four segments whose normals point into the board; their corners cannot be
 // reached from inside, so they carry no vertex circles.

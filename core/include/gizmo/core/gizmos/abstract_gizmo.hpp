@@ -20,10 +20,13 @@ namespace gizmo {
 
 enum class CollisionAnswer { CanCollide, Defer, NeverCollides };
 
-enum class GizmoKind {
-  Ball, OuterWalls, Square, Circle, Triangle, LeftFlipper, RightFlipper, Absorber, Booster, Teleporter, Sink, Portal, Spinner,
-  Spawner
-};
+#define GIZMO_KIND_ENUMERATOR(Name, stem) Name,
+enum class GizmoKind { Ball, OuterWalls, GIZMO_KINDS(GIZMO_KIND_ENUMERATOR) };
+#undef GIZMO_KIND_ENUMERATOR
+
+// The GizmoKind of a gizmo on the grid: both enums follow the kind list, GizmoKind after its two
+// kinds of its own.
+constexpr GizmoKind gizmoKindOf(GizmoType t) { return GizmoKind(static_cast<int>(t) + 2); }
 
 template <class Real> class Ball;
 

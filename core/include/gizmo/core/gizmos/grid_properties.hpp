@@ -13,56 +13,14 @@ namespace gizmo {
 
 inline bool isFlipper(GizmoType t) { return t == GizmoType::LeftFlipper || t == GizmoType::RightFlipper; }
 
-inline std::vector<std::string> gridPropertyNames(const GizmoSpec& s) {
-  std::vector<std::string> names{property::kName, property::kX, property::kY};
-  if (s.type == GizmoType::Absorber) {
-    names.push_back(property::kWidth);
-    names.push_back(property::kHeight);
-  } else {
-    names.push_back(property::kOrientation);
-  }
-  if (isFlipper(s.type)) names.push_back(property::kHandedness);
-  return names;
-}
-
-inline std::optional<PropertyValue> gridProperty(const GizmoSpec& s, std::string_view name) {
-  if (name == property::kName) return PropertyValue(s.name);
-  if (name == property::kX) return PropertyValue(std::int64_t{s.x});
-  if (name == property::kY) return PropertyValue(std::int64_t{s.y});
-  if (name == property::kOrientation && s.type != GizmoType::Absorber) return PropertyValue(std::int64_t{s.orientation});
-  if (name == property::kWidth && s.type == GizmoType::Absorber) return PropertyValue(std::int64_t{s.width});
-  if (name == property::kHeight && s.type == GizmoType::Absorber) return PropertyValue(std::int64_t{s.height});
-  if (name == property::kHandedness && isFlipper(s.type))
-    return PropertyValue(std::string(s.type == GizmoType::LeftFlipper ? "left" : "right"));
-  return std::nullopt;
-}
-
+// The properties of a gizmo on the grid: its name and cell, then its orientation, or its width and
+// height for a kind whose size is a property (a kind whose `side` is 0), and its handedness for a
+// kind that has one (kinds/STEM.hpp). Defined in core/src/grid_properties.cpp, where every kind's
+// file is included.
+std::vector<std::string> gridPropertyNames(const GizmoSpec& s);
+std::optional<PropertyValue> gridProperty(const GizmoSpec& s, std::string_view name);
 // Writes one property into s; false when the name or the type of value does not fit.
-inline bool setGridProperty(GizmoSpec& s, std::string_view name, const PropertyValue& value) {
-  if (name == property::kName) {
-    if (const std::string* text = std::get_if<std::string>(&value)) {
-      s.name = *text;
-      return true;
-    }
-    return false;
-  }
-  if (name == property::kHandedness && isFlipper(s.type)) {
-    const std::string* text = std::get_if<std::string>(&value);
-    if (!text || (*text != "left" && *text != "right")) return false;
-    s.type = *text == "left" ? GizmoType::LeftFlipper : GizmoType::RightFlipper;
-    return true;
-  }
-  const std::int64_t* n = std::get_if<std::int64_t>(&value);
-  if (!n || *n < -1000000 || *n > 1000000) return false;
-  const int v = static_cast<int>(*n);
-  if (name == property::kX) s.x = v;
-  else if (name == property::kY) s.y = v;
-  else if (name == property::kOrientation && s.type != GizmoType::Absorber) s.orientation = v;
-  else if (name == property::kWidth && s.type == GizmoType::Absorber) s.width = v;
-  else if (name == property::kHeight && s.type == GizmoType::Absorber) s.height = v;
-  else return false;
-  return true;
-}
+bool setGridProperty(GizmoSpec& s, std::string_view name, const PropertyValue& value);
 
 // A gizmo that stands on the grid and is described by a GizmoSpec: the property system for
 // every such gizmo, over whichever gizmo base it extends. `placed()` tells the gizmo its spec

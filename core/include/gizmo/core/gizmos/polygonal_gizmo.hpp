@@ -90,15 +90,7 @@ class GridBumper : public GridPlaced<AbstractGizmoWithPolygonalGeometry<Real>> {
     return k == GizmoKind::Square || k == GizmoKind::Circle || k == GizmoKind::Triangle ? &this->shape() : nullptr;
   }
 
-  GizmoKind kind() const override {
-    switch (this->placement().type) {
-      case GizmoType::Square: return GizmoKind::Square;
-      case GizmoType::Circle: return GizmoKind::Circle;
-      case GizmoType::Triangle: return GizmoKind::Triangle;
-      case GizmoType::Booster: return GizmoKind::Booster;
-      default: return GizmoKind::Absorber;
-    }
-  }
+  GizmoKind kind() const override { return gizmoKindOf(this->placement().type); }
 
  protected:
   void placed() override { this->setShape(restShape<Real>(this->placement())); }

@@ -1,0 +1,13 @@
+#pragma once
+// How the pictures draw the sink (cli/kinds/kind_drawing.hpp).
+#include "kinds/kind_drawing.hpp"
+
+namespace gizmo::cli {
+
+template <>
+struct KindDrawing<GizmoType::Sink> {
+  static constexpr Figure figure = Figure::Polygon;
+  static constexpr std::string_view svgClass = "sink";
+};
+
+}  // namespace gizmo::cli

@@ -1,0 +1,13 @@
+#pragma once
+// How the pictures draw the triangle (cli/kinds/kind_drawing.hpp).
+#include "kinds/kind_drawing.hpp"
+
+namespace gizmo::cli {
+
+template <>
+struct KindDrawing<GizmoType::Triangle> {
+  static constexpr Figure figure = Figure::Polygon;
+  static constexpr std::string_view svgClass = "triangle";
+};
+
+}  // namespace gizmo::cli

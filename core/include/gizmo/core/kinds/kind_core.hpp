@@ -1,0 +1,89 @@
+#pragma once
+// What every kind's core file (kinds/STEM.hpp) defines, and how shared code reaches it: a
+// specialisation of KindCore per kind, visited through a switch that the kind list generates. No
+// registration at run time: every lookup is a switch or a constant, compiled where it is used.
+#include <array>
+#include <concepts>
+#include <memory>
+#include <span>
+#include <string_view>
+#include <utility>
+
+#include "gizmo/core/board/model_rule.hpp"
+#include "gizmo/core/board_spec.hpp"
+#include "gizmo/core/geometry/features.hpp"
+#include "gizmo/core/kinds/kind_list.hpp"
+
+namespace gizmo {
+
+template <class Real> class AbstractGizmo;
+
+// Each kind's core description, specialised in its own file (kinds/STEM.hpp).
+template <GizmoType T>
+struct KindCore;
+
+// A kind as a type, for the generic code that visits every kind.
+template <GizmoType T>
+struct KindTag {
+  static constexpr GizmoType type = T;
+};
+
+// What a kind's core file must hold; kind_registry.cpp checks every kind against it, so that an
+// incomplete file fails to compile with the kind's name in the message.
+template <class K>
+concept CoreKindEntry = requires(Shape<double>& shape, const GizmoSpec& spec) {
+  // Its names: the text command and its line (for messages; the line's word count is the
+  // command's), the XML element, the word in messages, the drawing's class.
+  { K::textCommand } -> std::convertible_to<std::string_view>;
+  { K::textUsage } -> std::convertible_to<std::string_view>;
+  { K::xmlElement } -> std::convertible_to<std::string_view>;
+  { K::word } -> std::convertible_to<std::string_view>;
+  { K::drawing } -> std::convertible_to<std::string_view>;
+  // Its box: the side of its square box in L (0: its size is a property, as an absorber's).
+  { K::side } -> std::convertible_to<int>;
+  // A disc of radius 0.5 in its cell (the pictures and the fuzz checker draw and test it so).
+  { K::disc } -> std::convertible_to<bool>;
+  // Whether the XML writer writes its orientation attribute when it is 0 too (as the programs
+  // that write the element do); otherwise only when it is not 0.
+  { K::xmlOrientationAlways } -> std::convertible_to<bool>;
+  // Its handedness property ("left", "right"), empty for a kind without one.
+  { K::handedness } -> std::convertible_to<std::string_view>;
+  // The model rules (board/model_rule.hpp) that only this kind records.
+  { std::span<const ModelRule>(K::rules) };
+  // Its outline at rest, in board coordinates (what restShape returns for it).
+  K::template addRestShape<double>(shape, spec);
+  // The gizmo the board builds for it.
+  { K::template build<double>(spec) } -> std::same_as<std::unique_ptr<AbstractGizmo<double>>>;
+};
+
+// Calls f(KindTag<T>{}) for the kind t: one switch, generated from the kind list.
+template <class F>
+constexpr decltype(auto) visitKind(GizmoType t, F&& f) {
+  switch (t) {
+#define GIZMO_KIND_CASE(Name, stem) \
+  case GizmoType::Name: return std::forward<F>(f)(KindTag<GizmoType::Name>{});
+    GIZMO_KINDS(GIZMO_KIND_CASE)
+#undef GIZMO_KIND_CASE
+  }
+  return std::forward<F>(f)(KindTag<GizmoType::Square>{});  // not reached: every GizmoType is a case
+}
+
+// Calls f(KindTag<T>{}) for every kind, in the list's order.
+template <class F>
+constexpr void forEachKind(F&& f) {
+#define GIZMO_KIND_CALL(Name, stem) f(KindTag<GizmoType::Name>{});
+  GIZMO_KINDS(GIZMO_KIND_CALL)
+#undef GIZMO_KIND_CALL
+}
+
+// The values of GizmoType are in logs and tests: a kind line moved or inserted before the end of
+// the list would change them.
+static_assert(static_cast<int>(GizmoType::Square) == 0 && static_cast<int>(GizmoType::Circle) == 1 &&
+                  static_cast<int>(GizmoType::Triangle) == 2 && static_cast<int>(GizmoType::LeftFlipper) == 3 &&
+                  static_cast<int>(GizmoType::RightFlipper) == 4 && static_cast<int>(GizmoType::Absorber) == 5 &&
+                  static_cast<int>(GizmoType::Booster) == 6 && static_cast<int>(GizmoType::Teleporter) == 7 &&
+                  static_cast<int>(GizmoType::Sink) == 8 && static_cast<int>(GizmoType::Portal) == 9 &&
+                  static_cast<int>(GizmoType::Spinner) == 10 && static_cast<int>(GizmoType::Spawner) == 11,
+              "GizmoType's values are in logs and tests: add a kind at the end of kinds/kind_list.hpp");
+
+}  // namespace gizmo

@@ -1,0 +1,20 @@
+#pragma once
+// The absorber: placed by the generator's first draw, among the six standard kinds, at any size.
+// What the fuzz generator and the verification checks know of it.
+#include "kinds/kind_verify.hpp"
+
+namespace gizmo::verify {
+
+template <>
+struct KindVerify<GizmoType::Absorber> {
+  static constexpr bool generatedByConversion = false;
+  static constexpr bool alwaysKeyed = false;
+  static constexpr bool aimedAtCorner = true;
+  static constexpr bool grazedAlongEdge = true;
+  static constexpr bool restedOnTop = true;
+  static constexpr bool touchedBesideCapsule = false;
+  static constexpr std::string_view exactRunRefusal = "";
+  static constexpr bool box2dModels = true;
+};
+
+}  // namespace gizmo::verify

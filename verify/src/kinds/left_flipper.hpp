@@ -1,0 +1,21 @@
+#pragma once
+// The left flipper: placed by the generator's first draw, among the six standard kinds, always with
+// a key connection so that it swings. What the fuzz generator and the verification checks know of
+// it.
+#include "kinds/kind_verify.hpp"
+
+namespace gizmo::verify {
+
+template <>
+struct KindVerify<GizmoType::LeftFlipper> {
+  static constexpr bool generatedByConversion = false;
+  static constexpr bool alwaysKeyed = true;
+  static constexpr bool aimedAtCorner = false;
+  static constexpr bool grazedAlongEdge = true;
+  static constexpr bool restedOnTop = false;
+  static constexpr bool touchedBesideCapsule = true;
+  static constexpr std::string_view exactRunRefusal = "";
+  static constexpr bool box2dModels = true;
+};
+
+}  // namespace gizmo::verify
