@@ -78,7 +78,8 @@ void BM_SwingingFlipperTimeOfImpact(benchmark::State& state) {
   axis.omega = Real(-6) * piOf<Real>();
   axis.length = r<Real>(1.5);
   axis.radius = r<Real>(0.25);
-  const Trajectory<Real> ball{Vec2<Real>(r<Real>(10.3), r<Real>(12.5)), Vec2<Real>(), Vec2<Real>(Real(0), ballistic ? r<Real>(25) : Real(0))};
+  const Trajectory<Real> ball{Vec2<Real>(r<Real>(10.3), r<Real>(12.5)), Vec2<Real>(),
+                              Vec2<Real>(Real(0), ballistic ? r<Real>(25) : Real(0))};
   const Real radius = r<Real>(0.25), limit = Real(1) / Real(12);
   for (auto _ : state) {
     auto contact = swingingCapsuleTimeOfImpact(ball, radius, axis, limit);
@@ -94,11 +95,11 @@ void AtMpfr256(benchmark::State& state) {
   Kernel(state);
 }
 
-#define GIZMO_KERNEL_PRECISIONS(kernel)                                                              \
-  BENCHMARK_TEMPLATE(kernel, float)->ArgName("ballistic")->Arg(0)->Arg(1);                          \
-  BENCHMARK_TEMPLATE(kernel, double)->ArgName("ballistic")->Arg(0)->Arg(1);                         \
-  BENCHMARK_TEMPLATE(kernel, long double)->ArgName("ballistic")->Arg(0)->Arg(1);                    \
-  BENCHMARK_TEMPLATE(kernel, Float128)->ArgName("ballistic")->Arg(0)->Arg(1);                       \
+#define GIZMO_KERNEL_PRECISIONS(kernel)                                          \
+  BENCHMARK_TEMPLATE(kernel, float)->ArgName("ballistic")->Arg(0)->Arg(1);       \
+  BENCHMARK_TEMPLATE(kernel, double)->ArgName("ballistic")->Arg(0)->Arg(1);      \
+  BENCHMARK_TEMPLATE(kernel, long double)->ArgName("ballistic")->Arg(0)->Arg(1); \
+  BENCHMARK_TEMPLATE(kernel, Float128)->ArgName("ballistic")->Arg(0)->Arg(1);    \
   BENCHMARK(AtMpfr256<kernel<MpfrReal>>)->Name(#kernel "<mpfr:256>")->ArgName("ballistic")->Arg(0)->Arg(1);
 
 GIZMO_KERNEL_PRECISIONS(BM_EdgeTimeOfImpact)

@@ -66,8 +66,7 @@ void recordedInMemory(benchmark::State& state, const BoardSpec& board) {
   counters(state, events, bytes);
 }
 
-void recordedToFile(benchmark::State& state, const BoardSpec& board, const char* name,
-                    double seconds = kBoardSeconds) {
+void recordedToFile(benchmark::State& state, const BoardSpec& board, const char* name, double seconds = kBoardSeconds) {
   const RunRequest r = request(board, seconds);
   const std::string path = logPath(name);
   std::uint64_t events = 0, bytes = 0;
@@ -118,10 +117,14 @@ class RawCopyObserver final : public BoardObserver<double> {
     put(std::uint8_t(3), e.sequence);
     for (const BallChange<double>& c : o.balls()) put(c.position, c.velocityBefore, c.velocityAfter);
   }
-  void triggerFired(const double& t, GizmoId source, GizmoId target) override { put(std::uint8_t(4), t, source, target); }
+  void triggerFired(const double& t, GizmoId source, GizmoId target) override {
+    put(std::uint8_t(4), t, source, target);
+  }
   void actionPerformed(const double& t, GizmoId target) override { put(std::uint8_t(5), t, target); }
   void inputApplied(const double& t, int key, KeyDirection d) override { put(std::uint8_t(6), t, key, d); }
-  void modelRuleApplied(const double& t, ModelRule r, GizmoId g, GizmoId other) override { put(std::uint8_t(7), t, r, g, other); }
+  void modelRuleApplied(const double& t, ModelRule r, GizmoId g, GizmoId other) override {
+    put(std::uint8_t(7), t, r, g, other);
+  }
   void tickBoundary(const double& t) override { put(std::uint8_t(8), t); }
 
  private:

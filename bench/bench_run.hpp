@@ -26,7 +26,8 @@ inline void runBoard(benchmark::State& state, const std::optional<BoardSpec>& bo
     benchmark::DoNotOptimize(s.energy);
   }
   state.counters["events/s"] = benchmark::Counter(double(events), benchmark::Counter::kIsRate);
-  state.counters["board_s/s"] = benchmark::Counter(boardSeconds * double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["board_s/s"] =
+      benchmark::Counter(boardSeconds * double(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["events/run"] = double(events) / double(state.iterations());
 }
 

@@ -8,8 +8,8 @@
 namespace gizmo::cli {
 
 LoadedBoard loadBoard(const std::string& path, bool strict) {
-  const io::ReadResult r = path.empty() ? io::readBoardString(kDefaultBoardText, kDefaultBoardName)
-                                        : io::readBoardFile(path);
+  const io::ReadResult r =
+      path.empty() ? io::readBoardString(kDefaultBoardText, kDefaultBoardName) : io::readBoardFile(path);
   if (strict) io::refuseLeniency(r);
   LoadedBoard out{r.board, path.empty() ? std::string(kDefaultBoardName) : path, {}};
   for (const io::Diagnostic& d : r.warnings) {

@@ -19,7 +19,7 @@ inline constexpr int kExitBadInput = 2;
 
 struct LoadedBoard {
   BoardSpec spec;
-  std::string name;  // what to call it in output
+  std::string name;                   // what to call it in output
   std::vector<std::string> warnings;  // what the reader read leniently, one io::format line each
 };
 

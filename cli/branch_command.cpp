@@ -87,10 +87,11 @@ int branchCommand(const RecordOptions& o) {
     std::cout << j.dump(2) << '\n';
     return kExitOk;
   }
-  std::printf("branch     of %s at event %llu, time %.17g (%s); the log starts at event %llu, the tick boundary "
-              "before it\n",
-              o.from.c_str(), static_cast<unsigned long long>(result.origin.event), result.time.value,
-              result.time.text.c_str(), static_cast<unsigned long long>(result.startEvents));
+  std::printf(
+      "branch     of %s at event %llu, time %.17g (%s); the log starts at event %llu, the tick boundary "
+      "before it\n",
+      o.from.c_str(), static_cast<unsigned long long>(result.origin.event), result.time.value, result.time.text.c_str(),
+      static_cast<unsigned long long>(result.startEvents));
   if (result.keysLeftOut > 0)
     std::printf("keys       %zu of the key script's keys come before the branch point and are left out\n",
                 result.keysLeftOut);

@@ -121,15 +121,15 @@ EngineSide box2dSide(const verify::CrosscheckOptions& options) {
                {"position_iterations", options.box2d.positionIterations},
                {"mapping", mappingJson()}};
   char text[512];
-  std::snprintf(text, sizeof text,
-                "box2d      %s, bullets %s, continuous %s, restitution threshold %g m/s, %d velocity / %d position iterations\n"
-                "mapping    polygons inset by the %g L skin; Box2D's time of impact stops %g L past contact (+- %g);\n"
-                "           at most %g L and %g rad per step\n",
-                verify::box2dVersion().c_str(), options.box2d.bullet ? "on" : "off", options.box2d.continuous ? "on" : "off",
-                options.box2d.restitutionThreshold,
-                options.box2d.velocityIterations, options.box2d.positionIterations, verify::kBox2dPolygonSkin,
-                3 * verify::kBox2dLinearSlop, verify::kBox2dToiTolerance, verify::kBox2dMaxTranslation,
-                verify::kBox2dMaxRotation);
+  std::snprintf(
+      text, sizeof text,
+      "box2d      %s, bullets %s, continuous %s, restitution threshold %g m/s, %d velocity / %d position iterations\n"
+      "mapping    polygons inset by the %g L skin; Box2D's time of impact stops %g L past contact (+- %g);\n"
+      "           at most %g L and %g rad per step\n",
+      verify::box2dVersion().c_str(), options.box2d.bullet ? "on" : "off", options.box2d.continuous ? "on" : "off",
+      options.box2d.restitutionThreshold, options.box2d.velocityIterations, options.box2d.positionIterations,
+      verify::kBox2dPolygonSkin, 3 * verify::kBox2dLinearSlop, verify::kBox2dToiTolerance, verify::kBox2dMaxTranslation,
+      verify::kBox2dMaxRotation);
   side.text = text;
   return side;
 }
@@ -144,11 +144,12 @@ EngineSide box2d3Side(const verify::Box2dOptions& options, const std::string& na
                {"sub_steps", verify::kBox2d3SubSteps},
                {"mapping", mappingJson()}};
   char text[512];
-  std::snprintf(text, sizeof text,
-                "box2d v3   %s under node, bullets %s, continuous %s, restitution threshold %g m/s, %d sub-steps\n"
-                "mapping    the same bodies and shapes as Box2D 2.4's (polygons inset by the %g L skin, rounded by it)\n",
-                name.c_str(), options.bullet ? "on" : "off", options.continuous ? "on" : "off",
-                options.restitutionThreshold, verify::kBox2d3SubSteps, verify::kBox2dPolygonSkin);
+  std::snprintf(
+      text, sizeof text,
+      "box2d v3   %s under node, bullets %s, continuous %s, restitution threshold %g m/s, %d sub-steps\n"
+      "mapping    the same bodies and shapes as Box2D 2.4's (polygons inset by the %g L skin, rounded by it)\n",
+      name.c_str(), options.bullet ? "on" : "off", options.continuous ? "on" : "off", options.restitutionThreshold,
+      verify::kBox2d3SubSteps, verify::kBox2dPolygonSkin);
   side.text = text;
   return side;
 }
@@ -175,7 +176,11 @@ void printRunsJson(const CheckedRun& run, const CrosscheckCommandOptions& o, con
     if (s.firstUnmatched) {
       const verify::CollisionRecord& c = s.firstUnmatched->collision;
       first = {{"missed_by", s.firstUnmatched->side == "ours" ? "engine" : "us"},
-               {"time", c.time}, {"ball", c.ball}, {"other", c.other}, {"x", c.position.x}, {"y", c.position.y}};
+               {"time", c.time},
+               {"ball", c.ball},
+               {"other", c.other},
+               {"x", c.position.x},
+               {"y", c.position.y}};
     }
     nlohmann::ordered_json series = nlohmann::ordered_json::array();
     for (const auto& [t, d] : s.divergence) series.push_back({t, d});
@@ -245,13 +250,13 @@ void printRunsText(const CheckedRun& run, const CrosscheckCommandOptions& o, con
       std::printf("%-10s %7llu %6zu %7zu %8zu %8zu %10.3g %10.3g %9.3g %6zu %7llu %9s %9.3g %9.3g %8.4f\n", dt,
                   static_cast<unsigned long long>(s.steps), s.theirCollisions, s.matched, s.missedByThem, s.missedByUs,
                   s.maxTimeError, s.meanTimeError, s.maxPositionError, s.matchedWithinToi,
-                  static_cast<unsigned long long>(s.speedCappedSteps + s.rotationCappedSteps), diverged, s.maxDivergence,
-                  s.maxEnergyDifference, s.wallSeconds);
+                  static_cast<unsigned long long>(s.speedCappedSteps + s.rotationCappedSteps), diverged,
+                  s.maxDivergence, s.maxEnergyDifference, s.wallSeconds);
     else
       std::printf("%-10s %7llu %6s %7s %8s %8s %10s %10s %9s %6s %7llu %9s %9.3g %9.3g %8.4f\n", dt,
                   static_cast<unsigned long long>(s.steps), "-", "-", "-", "-", "-", "-", "-", "-",
-                  static_cast<unsigned long long>(s.speedCappedSteps + s.rotationCappedSteps), diverged, s.maxDivergence,
-                  s.maxEnergyDifference, s.wallSeconds);
+                  static_cast<unsigned long long>(s.speedCappedSteps + s.rotationCappedSteps), diverged,
+                  s.maxDivergence, s.maxEnergyDifference, s.wallSeconds);
     if (s.firstUnmatched) {
       const verify::CollisionRecord& c = s.firstUnmatched->collision;
       std::printf("  first unmatched: %s hit of %s on %s at t = %.6g s, (%.4f, %.4f)\n",
@@ -279,8 +284,11 @@ int toiSurveyCommand(const CrosscheckCommandOptions& o) {
                        {"max_depth", k.maxDepth},
                        {"findings", k.findingCount},
                        {"finding_examples", k.findings}});
-    nlohmann::ordered_json out{{"seed", o.seed}, {"sweeps_per_kind", o.toiSweeps}, {"box2d_version", verify::box2dVersion()},
-                               {"mapping", mappingJson()}, {"kinds", kinds}};
+    nlohmann::ordered_json out{{"seed", o.seed},
+                               {"sweeps_per_kind", o.toiSweeps},
+                               {"box2d_version", verify::box2dVersion()},
+                               {"mapping", mappingJson()},
+                               {"kinds", kinds}};
     std::cout << out.dump(2) << '\n';
     return kExitOk;
   }
@@ -413,7 +421,8 @@ int crosscheckCommand(const CrosscheckCommandOptions& o) {
     return kExitBadInput;
   }
   if (!o.traceOut.empty() && !o.trace.empty()) {
-    std::cerr << "gizmo crosscheck: --trace-out writes Box2D v3's run as a trace and --trace reads one: give one of them\n";
+    std::cerr
+        << "gizmo crosscheck: --trace-out writes Box2D v3's run as a trace and --trace reads one: give one of them\n";
     return kExitBadInput;
   }
   if (!o.traceOut.empty() && o.engine != "box2d-v3") {
@@ -437,12 +446,14 @@ int crosscheckCommand(const CrosscheckCommandOptions& o) {
   options.box2d.continuous = !o.noContinuous;
   options.box2d.restitutionThreshold = o.restitutionThreshold;
   if (!o.traceOut.empty() && options.steps.size() != 1) {
-    std::cerr << "gizmo crosscheck: --trace-out writes the run of one step size: give --dt one (for example --dt 1/240)\n";
+    std::cerr
+        << "gizmo crosscheck: --trace-out writes the run of one step size: give --dt one (for example --dt 1/240)\n";
     return kExitBadInput;
   }
   if (o.engine == "box2d-v3") return box2d3Command(run, o, options);
   if (!o.pathOut.empty() && options.steps.size() != 1) {
-    std::cerr << "gizmo crosscheck: --path-out writes the path of one step size: give --dt one (for example --dt 1/240)\n";
+    std::cerr
+        << "gizmo crosscheck: --path-out writes the path of one step size: give --dt one (for example --dt 1/240)\n";
     return kExitBadInput;
   }
   options.keepBox2dSamples = !o.pathOut.empty();

@@ -15,15 +15,15 @@ inline constexpr const char* kDefaultCrosscheckSteps = "1/60,1/120,1/240,1/480";
 struct CrosscheckCommandOptions {
   RunOptions run;
   std::string steps = kDefaultCrosscheckSteps;  // --dt: comma-separated seconds, each a number or 1/N
-  std::string engine = "box2d-2.4";  // or box2d-v3 (the node program, verify/box2d3)
+  std::string engine = "box2d-2.4";             // or box2d-v3 (the node program, verify/box2d3)
   bool noBullet = false;
   bool noContinuous = false;
   double restitutionThreshold = 0;
-  int toiSweeps = 0;       // > 0: the time-of-impact survey instead of whole runs
-  std::uint64_t seed = 1;  // the survey's seed
-  std::string pathOut;     // writes Box2D's ball paths here (one step size only): render_path_file.hpp
-  std::string traceOut;    // Box2D v3's program writes its run here as a trace (one step size only)
-  std::string trace;       // another engine's run (JSON lines: engine_trace.hpp) instead of Box2D's
+  int toiSweeps = 0;             // > 0: the time-of-impact survey instead of whole runs
+  std::uint64_t seed = 1;        // the survey's seed
+  std::string pathOut;           // writes Box2D's ball paths here (one step size only): render_path_file.hpp
+  std::string traceOut;          // Box2D v3's program writes its run here as a trace (one step size only)
+  std::string trace;             // another engine's run (JSON lines: engine_trace.hpp) instead of Box2D's
   std::string box2dOptionGiven;  // the first Box2D option given on the command line (refused with --trace)
 };
 int crosscheckCommand(const CrosscheckCommandOptions& options);

@@ -55,11 +55,14 @@ int diffCommand(const DiffOptions& o) {
   } else {
     std::printf("the logs part at decision %llu: %s\n", static_cast<unsigned long long>(r.firstDecision + r.matched),
                 r.where.c_str());
-    for (const replay::DecisionView& d : r.before) std::printf("  both    %s\n", decisionLine(d, a->gizmoNames, false).c_str());
+    for (const replay::DecisionView& d : r.before)
+      std::printf("  both    %s\n", decisionLine(d, a->gizmoNames, false).c_str());
     std::printf("> first   %s\n", r.first ? decisionLine(*r.first, a->gizmoNames, true).c_str() : "(ends)");
     std::printf("> second  %s\n", r.second ? decisionLine(*r.second, b->gizmoNames, true).c_str() : "(ends)");
-    for (const replay::DecisionView& d : r.afterFirst) std::printf("  first   %s\n", decisionLine(d, a->gizmoNames, false).c_str());
-    for (const replay::DecisionView& d : r.afterSecond) std::printf("  second  %s\n", decisionLine(d, b->gizmoNames, false).c_str());
+    for (const replay::DecisionView& d : r.afterFirst)
+      std::printf("  first   %s\n", decisionLine(d, a->gizmoNames, false).c_str());
+    for (const replay::DecisionView& d : r.afterSecond)
+      std::printf("  second  %s\n", decisionLine(d, b->gizmoNames, false).c_str());
   }
   if (!r.sameScalar)
     std::printf("before that: event times differ by at most %.3g s, ball positions by at most %.3g L\n",

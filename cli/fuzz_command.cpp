@@ -1,10 +1,10 @@
 #include "fuzz_command.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -127,8 +127,8 @@ int checkOne(const FuzzOptions& o, const std::vector<const fz::Property*>& prope
     }
   }
   for (std::size_t k = 0; k < expectations.size(); ++k) {
-    const auto failed = std::find_if(broken.begin(), broken.end(),
-                                     [k](const fz::ExpectationFailure& f) { return f.expectation == k; });
+    const auto failed =
+        std::find_if(broken.begin(), broken.end(), [k](const fz::ExpectationFailure& f) { return f.expectation == k; });
     std::cout << "expect " << expectations[k].source << ": " << (failed == broken.end() ? "holds" : "FAILS") << '\n';
     if (failed != broken.end()) {
       std::cout << "  " << failed->message << '\n';
@@ -179,11 +179,14 @@ int runCampaignAndReport(const FuzzOptions& o, fz::CampaignOptions& c) {
   // campaign's result depend on the machine (docs/fuzzing.md).
   const auto start = std::chrono::steady_clock::now();
   if (o.wallSeconds > 0)
-    c.stop = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > o.wallSeconds; };
+    c.stop = [&] {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > o.wallSeconds;
+    };
   const bool tty = ::isatty(STDERR_FILENO);
   c.progress = [&](std::uint64_t done, std::uint64_t planned, std::uint64_t failures) {
     // On a terminal one line that updates itself; in a log, a line every tenth of the way.
-    if (tty) std::cerr << "\rgizmo fuzz: " << done << "/" << planned << " cases, " << failures << " failures" << std::flush;
+    if (tty)
+      std::cerr << "\rgizmo fuzz: " << done << "/" << planned << " cases, " << failures << " failures" << std::flush;
     else if (done == planned || done % std::max<std::uint64_t>(1, planned / 10) == 0)
       std::cerr << "gizmo fuzz: " << done << "/" << planned << " cases, " << failures << " failures\n";
   };
@@ -277,10 +280,10 @@ bool baseRun(const FuzzOptions& o, RunRequest& base, Precision& scalar, int& cod
 }
 
 bool checkVariations(const fz::VariationOptions& v) {
-  const std::pair<const char*, double> ranges[] = {{"--vary-keys", v.keyPressesPer10s}, {"--vary-position", v.position},
-                                                   {"--vary-speed", v.speed},           {"--vary-angle", v.angle},
-                                                   {"--vary-kick", v.kick},             {"--vary-gravity", v.gravity},
-                                                   {"--vary-friction", v.friction}};
+  const std::pair<const char*, double> ranges[] = {
+      {"--vary-keys", v.keyPressesPer10s}, {"--vary-position", v.position}, {"--vary-speed", v.speed},
+      {"--vary-angle", v.angle},           {"--vary-kick", v.kick},         {"--vary-gravity", v.gravity},
+      {"--vary-friction", v.friction}};
   for (const auto& [flag, value] : ranges)
     if (!(value >= 0) || !(value <= 1e6)) {
       std::cerr << "gizmo fuzz: " << flag << " must be a number from 0 (off) up\n";
@@ -318,7 +321,8 @@ int boardCampaign(const FuzzOptions& o, std::vector<const fz::Property*> propert
     properties.push_back(&*expected);
   }
   if (properties.empty()) {
-    std::cerr << "gizmo fuzz: " << o.expect << " holds no expectation, and --property expectations asks for those alone\n";
+    std::cerr << "gizmo fuzz: " << o.expect
+              << " holds no expectation, and --property expectations asks for those alone\n";
     return kExitBadInput;
   }
   const fz::VariationSource source(base, vary, scalar);

@@ -48,7 +48,9 @@ std::string decisionLine(const DecisionView& d, const std::vector<std::string>& 
                 number(b.vxBefore, exact) + ", " + number(b.vyBefore, exact) + ") -> (" + number(b.vx, exact) + ", " +
                 number(b.vy, exact) + ")";
       break;
-    case DecisionType::Trigger: line += " " + replay::gizmoName(names, d.gizmo) + " -> " + replay::gizmoName(names, d.other); break;
+    case DecisionType::Trigger:
+      line += " " + replay::gizmoName(names, d.gizmo) + " -> " + replay::gizmoName(names, d.other);
+      break;
     case DecisionType::Action: line += " " + replay::gizmoName(names, d.gizmo); break;
     case DecisionType::Input:
       line += std::string(d.direction == KeyDirection::Up ? " up " : " down ") + std::to_string(d.key);
@@ -131,7 +133,10 @@ void printState(const std::string& label, const replay::StateView& s) {
 nlohmann::ordered_json stateJson(const replay::StateView& s) {
   nlohmann::ordered_json balls = nlohmann::ordered_json::array();
   for (const replay::BallView& b : s.balls)
-    balls.push_back({{"name", b.name}, {"x", exactJson(b.x)}, {"y", exactJson(b.y)}, {"vx", exactJson(b.vx)},
+    balls.push_back({{"name", b.name},
+                     {"x", exactJson(b.x)},
+                     {"y", exactJson(b.y)},
+                     {"vx", exactJson(b.vx)},
                      {"vy", exactJson(b.vy)}});
   return {{"time", exactJson(s.time)}, {"events", s.events}, {"balls", balls}, {"queue", s.queue}};
 }

@@ -44,7 +44,8 @@ bool readModule(const std::string& path, std::string& text, std::string& why) {
       "(about five minutes the first time), or give one with --module FILE or GIZMO_PLAY_MODULE";
   std::error_code error;
   if (path.empty() || !std::filesystem::is_regular_file(path, error)) {
-    why = "the WebAssembly play module is not built" + (path.empty() ? std::string() : " (no " + path + ")") + "; " + howToBuild;
+    why = "the WebAssembly play module is not built" + (path.empty() ? std::string() : " (no " + path + ")") + "; " +
+          howToBuild;
     return false;
   }
   std::ifstream in(path, std::ios::binary);

@@ -19,7 +19,8 @@ Json keysJson(const BoardSpec& board) {
     (k.direction == KeyDirection::Down ? down : up).push_back(k.target);
   }
   Json out = Json::array();
-  for (const auto& [code, targets] : keys) out.push_back({{"code", code}, {"down", targets.first}, {"up", targets.second}});
+  for (const auto& [code, targets] : keys)
+    out.push_back({{"code", code}, {"down", targets.first}, {"up", targets.second}});
   return out;
 }
 

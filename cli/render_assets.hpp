@@ -9,6 +9,6 @@ extern const char* const kRunDataJs;  // the run's decoding and its state at a m
 extern const char* const kPlayHtml;
 extern const char* const kPlayCss;
 extern const char* const kPlayJs;
-extern const char* const kBoardViewJs;  // the board drawing both pages share
+extern const char* const kBoardViewJs;     // the board drawing both pages share
 extern const char* const kTimelineViewJs;  // the whole run's timeline both pages share
 }  // namespace gizmo::cli

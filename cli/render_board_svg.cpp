@@ -50,20 +50,22 @@ std::string gizmoSvg(const GizmoDrawing& g) {
   const std::string title = "<title>" + escapeXml(g.name) + "</title>";
   switch (figureOf(g.type)) {  // each kind's drawing file says (cli/kinds/STEM.hpp)
     case Figure::Disc:
-      return std::string("<circle class=\"") + svgClassOf(g.type) + "\" cx=\"" + num(g.centre.x) + "\" cy=\"" + num(g.centre.y) + "\" r=\"" +
-             num(g.radius) + "\">" + title + "</circle>\n";
+      return std::string("<circle class=\"") + svgClassOf(g.type) + "\" cx=\"" + num(g.centre.x) + "\" cy=\"" +
+             num(g.centre.y) + "\" r=\"" + num(g.radius) + "\">" + title + "</circle>\n";
     case Figure::Flipper: {
       const Vec2<double> tip = g.pivot + g.length * quarter(g.restQuarter);
-      return std::string("<line class=\"") + svgClassOf(g.type) + "\" stroke-width=\"" + num(2 * g.radius) + "\" x1=\"" + num(g.pivot.x) + "\" y1=\"" +
-             num(g.pivot.y) + "\" x2=\"" + num(tip.x) + "\" y2=\"" + num(tip.y) + "\">" + title + "</line>\n";
+      return std::string("<line class=\"") + svgClassOf(g.type) + "\" stroke-width=\"" + num(2 * g.radius) +
+             "\" x1=\"" + num(g.pivot.x) + "\" y1=\"" + num(g.pivot.y) + "\" x2=\"" + num(tip.x) + "\" y2=\"" +
+             num(tip.y) + "\">" + title + "</line>\n";
     }
     case Figure::Cross: {
       // The cross at rest: two bars through the centre (a picture of the board, not of a moment).
       std::string bars;
       for (int q = 0; q < 2; ++q) {
         const Vec2<double> a = g.centre - g.length * quarter(q), b = g.centre + g.length * quarter(q);
-        bars += std::string("<line class=\"") + svgClassOf(g.type) + "\" stroke-width=\"" + num(2 * g.radius) + "\" x1=\"" + num(a.x) + "\" y1=\"" + num(a.y) +
-                "\" x2=\"" + num(b.x) + "\" y2=\"" + num(b.y) + "\">" + title + "</line>\n";
+        bars += std::string("<line class=\"") + svgClassOf(g.type) + "\" stroke-width=\"" + num(2 * g.radius) +
+                "\" x1=\"" + num(a.x) + "\" y1=\"" + num(a.y) + "\" x2=\"" + num(b.x) + "\" y2=\"" + num(b.y) + "\">" +
+                title + "</line>\n";
       }
       return bars;
     }
@@ -118,10 +120,13 @@ std::string boardSvg(const BoardDrawing& board, const RunTrack* trace) {
                     " " + num(side) + "\">\n";
   svg +=
       "<style>.wall{fill:#10131a;stroke:#8a93a6;stroke-width:0.06}.square{fill:#d9534f}.triangle{fill:#3e7cd6}"
-      ".circle{fill:#3fae5a}.absorber{fill:#b05cc4}.booster{fill:#e0b830}.teleporter{fill:#2bb3c0}.portal{fill:#7b5cd6}.sink{fill:#55556a}.flipper{stroke:#f0a030;stroke-linecap:round}.spinner{stroke:#b388ff;stroke-linecap:round}.spawner{fill:none;stroke:#7fa8c9;stroke-width:0.06;stroke-dasharray:0.15 0.1}"
+      ".circle{fill:#3fae5a}.absorber{fill:#b05cc4}.booster{fill:#e0b830}.teleporter{fill:#2bb3c0}.portal{fill:#7b5cd6}"
+      ".sink{fill:#55556a}.flipper{stroke:#f0a030;stroke-linecap:round}.spinner{stroke:#b388ff;stroke-linecap:round}."
+      "spawner{fill:none;stroke:#7fa8c9;stroke-width:0.06;stroke-dasharray:0.15 0.1}"
       ".ball{fill:#f4f4f4;stroke:#222;stroke-width:0.03}.trace{fill:none;stroke:#ffd54a;stroke-width:0.04;"
       "stroke-linejoin:round;opacity:0.8}.hit{fill:#ff4040}</style>\n";
-  svg += "<rect class=\"wall\" x=\"0\" y=\"0\" width=\"" + num(board.size) + "\" height=\"" + num(board.size) + "\"/>\n";
+  svg +=
+      "<rect class=\"wall\" x=\"0\" y=\"0\" width=\"" + num(board.size) + "\" height=\"" + num(board.size) + "\"/>\n";
   for (const GizmoDrawing& g : board.gizmos) svg += gizmoSvg(g);
   if (trace) {
     for (const BallTrack& ball : trace->balls) svg += pathSvg(ball, trace->endTime);

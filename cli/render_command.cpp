@@ -61,8 +61,10 @@ int box2dComparison(const replay::OpenedLog& log, const std::string& step, Compa
   const std::optional<double> dt = parseStepSize(step);
   if (!dt) return fail("--compare box2d:" + step + ": not a step size from 1e-5 to 0.1 s (a number or 1/N)");
   if (log.request.duration / *dt > kMaxBox2dSteps)
-    return fail("--compare box2d:" + step + ": the log's run is too long for that step size (more than 1e7 Box2D steps)");
-  if (const std::optional<std::string> why = verify::box2dCannotModel(log.request.board)) return fail("--compare: " + *why);
+    return fail("--compare box2d:" + step +
+                ": the log's run is too long for that step size (more than 1e7 Box2D steps)");
+  if (const std::optional<std::string> why = verify::box2dCannotModel(log.request.board))
+    return fail("--compare: " + *why);
   verify::Box2dOptions options;
   options.dt = *dt;
   const verify::RunRecord run = verify::runBox2d(log.request, options);
@@ -95,14 +97,16 @@ int comparisonOf(const replay::OpenedLog& log, const RenderOptions& o, Compariso
   std::error_code error;
   if (std::filesystem::is_regular_file(o.compare, error) && !isLogFile(o.compare)) {
     if (isPathFile(o.compare)) return pathComparison(log, o, out);
-    return fail(o.compare + ": neither a replay log nor a path file (--compare takes a log of the same board, a path "
+    return fail(o.compare +
+                ": neither a replay log nor a path file (--compare takes a log of the same board, a path "
                 "file from gizmo crosscheck --path-out, or box2d:STEP)");
   }
   int code = kExitOk;
   out.log = openLogFor("render", o.compare, code);
   if (!out.log) return code;
   if (out.log->header.board != log.header.board)
-    return fail(o.compare + ": not a run of the same board as " + o.input + " (--compare lays runs of one board over each other)");
+    return fail(o.compare + ": not a run of the same board as " + o.input +
+                " (--compare lays runs of one board over each other)");
   out.label = fileName(o.compare);
   return kExitOk;
 }

@@ -11,7 +11,9 @@ namespace gizmo::cli {
 namespace {
 double swingTime() { return Flipper<double>::swingTime(); }
 
-double progress(const SwingAnchor& a, double t) { return std::clamp(a.s0 + a.direction * (t - a.t0), 0.0, swingTime()); }
+double progress(const SwingAnchor& a, double t) {
+  return std::clamp(a.s0 + a.direction * (t - a.t0), 0.0, swingTime());
+}
 
 // Where progress stops changing: the ends of the swing, reached at these times.
 void addBends(const SwingAnchor& a, double from, double to, std::vector<double>& times) {

@@ -1,10 +1,10 @@
 // Whole-or-nothing files, base64 and page templates (see render_output.hpp).
 #include "render_output.hpp"
 
+#include <unistd.h>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace gizmo::cli {
 

@@ -199,7 +199,8 @@ PathFile box2dPathFile(const RunRequest& request, const std::string& boardName, 
                        const std::vector<verify::TrajectorySample>& samples) {
   PathFile f;
   char engine[160];
-  std::snprintf(engine, sizeof engine, "Box2D %s, bullets %s, restitution threshold %g m/s, %d velocity / %d position iterations",
+  std::snprintf(engine, sizeof engine,
+                "Box2D %s, bullets %s, restitution threshold %g m/s, %d velocity / %d position iterations",
                 verify::box2dVersion().c_str(), options.bullet ? "on" : "off", options.restitutionThreshold,
                 options.velocityIterations, options.positionIterations);
   f.engine = engine;

@@ -77,14 +77,16 @@ PathOverlay overlayOf(const PathFile& path, const std::string& label, const RunT
   overlay.dt = path.dt;
   overlay.tolerance = tolerance;
   for (std::size_t b = 0; b < path.balls.size(); ++b) {
-    const auto own = std::find_if(ours.balls.begin(), ours.balls.end(),
-                                  [&](const BallTrack& t) { return t.name == path.balls[b]; });
-    if (own == ours.balls.end()) throw std::runtime_error("the path's ball " + path.balls[b] + " is not a ball of the run");
+    const auto own =
+        std::find_if(ours.balls.begin(), ours.balls.end(), [&](const BallTrack& t) { return t.name == path.balls[b]; });
+    if (own == ours.balls.end())
+      throw std::runtime_error("the path's ball " + path.balls[b] + " is not a ball of the run");
     // The samples up to our run's end, and the one after it, which the player interpolates to.
     const std::vector<PathSample>& all = path.samples[b];
     std::size_t count = 0;
     while (count < all.size() && all[count].t <= ours.endTime) ++count;
-    const std::vector<PathSample> shown(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(std::min(all.size(), count + 1)));
+    const std::vector<PathSample> shown(all.begin(),
+                                        all.begin() + static_cast<std::ptrdiff_t>(std::min(all.size(), count + 1)));
 
     OurPosition position(ours, *own);
     for (std::size_t k = 0; k < count; ++k) {

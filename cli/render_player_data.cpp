@@ -26,7 +26,8 @@ Json eventsJson(const RunTrack& t) {
   for (std::int32_t id : t.eventA) a.push_back(smallId(id));
   for (std::int32_t id : t.eventB) b.push_back(smallId(id));
   for (std::size_t i = 0; i < t.eventFeature.size(); ++i)
-    feature.push_back(t.eventKind[i] == static_cast<std::uint8_t>(EventKind::Input) ? std::int16_t(-1) : smallId(t.eventFeature[i]));
+    feature.push_back(t.eventKind[i] == static_cast<std::uint8_t>(EventKind::Input) ? std::int16_t(-1)
+                                                                                    : smallId(t.eventFeature[i]));
   return {{"count", t.eventTime.size()},
           {"time", base64Of(t.eventTime)},
           {"kind", base64Of(t.eventKind)},

@@ -29,19 +29,14 @@ Json pathJson(const PathOverlay& path) {
                {"ours", {p.ours.x, p.ours.y}},
                {"theirs", {p.theirs.x, p.theirs.y}}};
   }
-  return {{"label", path.label},
-          {"engine", path.engine},
-          {"dt", path.dt},
-          {"tolerance", path.tolerance},
-          {"threshold", kPartingDistance},
-          {"balls", balls},
-          {"parting", parting}};
+  return {{"label", path.label},           {"engine", path.engine}, {"dt", path.dt},     {"tolerance", path.tolerance},
+          {"threshold", kPartingDistance}, {"balls", balls},        {"parting", parting}};
 }
 
 }  // namespace
 
-std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& runs, const std::optional<Parting>& parting,
-                       const PathOverlay* path) {
+std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& runs,
+                       const std::optional<Parting>& parting, const PathOverlay* path) {
   Json data{{"format", 1}, {"names", namesJson()}, {"board", drawingJson(board)}, {"runs", Json::array()}};
   for (const PlayerRun& run : runs) data["runs"].push_back(runJson(run));
   if (parting) {

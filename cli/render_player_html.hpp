@@ -20,7 +20,7 @@ struct Parting {
   std::optional<std::uint64_t> firstEvents, secondEvents;  // events each run had executed by then
 };
 
-std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& runs, const std::optional<Parting>& parting,
-                       const PathOverlay* path = nullptr);
+std::string playerHtml(const BoardDrawing& board, const std::vector<PlayerRun>& runs,
+                       const std::optional<Parting>& parting, const PathOverlay* path = nullptr);
 
 }  // namespace gizmo::cli

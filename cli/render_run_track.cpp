@@ -6,13 +6,13 @@
 #include <memory>
 #include <optional>
 
+#include <stdexcept>
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/sink.hpp"
 #include "gizmo/core/gizmos/spawner.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
-#include <stdexcept>
 
 namespace gizmo::cli {
 namespace {
@@ -32,7 +32,8 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
 
   // The board as built at time 0: its parameters, and each ball's first state (a ball placed at
   // rest in an absorber starts held there).
-  const std::unique_ptr<GameBoard<double>> board = buildBoard<double>(log.request.board, paramsFor<double>(log.request));
+  const std::unique_ptr<GameBoard<double>> board =
+      buildBoard<double>(log.request.board, paramsFor<double>(log.request));
   const PhysicsParams<double>& params = board->params();
   std::map<GizmoId, std::size_t> ballIndex;
   std::vector<BallPathBuilder> builders;
@@ -159,7 +160,8 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
         if (d->rule == ModelRule::Released && ball && hold.count(d->gizmo))
           ball->released(event, now, hold[d->gizmo], Absorber<double>::fireVelocity());
         if (d->rule == ModelRule::Teleported)
-          if (const auto* t = dynamic_cast<const Teleporter<double>*>(&board->gizmo(d->gizmo))) teleported[d->other] = t;
+          if (const auto* t = dynamic_cast<const Teleporter<double>*>(&board->gizmo(d->gizmo)))
+            teleported[d->other] = t;
         if (d->rule == ModelRule::FlipperBlocked && flippers.count(d->gizmo)) flippers[d->gizmo].blocked(event, now);
         if (d->rule == ModelRule::Spawned && spawnAt.count(d->gizmo)) {
           // A ball a sink held comes back; a new one starts its track here, at rest.

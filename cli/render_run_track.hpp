@@ -32,12 +32,12 @@ struct BallTrack {
 struct RunTrack {
   MotionModel model = MotionModel::Ballistic;
   std::string precision;
-  double duration = 0;  // as requested
-  double startTime = 0;  // where the log's run starts: 0, or a branch log's first keyframe
+  double duration = 0;           // as requested
+  double startTime = 0;          // where the log's run starts: 0, or a branch log's first keyframe
   std::uint64_t firstEvent = 0;  // the events before that start (a branch log's first keyframe)
-  double endTime = 0;   // the time of the last event read
+  double endTime = 0;            // the time of the last event read
   double tolerance = 0;
-  std::string truncation;  // why the log stops early, when it does
+  std::string truncation;               // why the log stops early, when it does
   std::vector<std::string> gizmoNames;  // by id
   // Executed events, in order: the i-th event is the one after which i + 1 events have run (in a
   // branch log, i + 1 events after its start).

@@ -36,7 +36,9 @@ int compare(const replay::OpenedLog& log, const ReplayOptions& o) {
       replay::replayLog(log, o.everyRecord ? replay::ReplayMethod::Records : replay::ReplayMethod::Digests);
   const char* compared = r.byDigests ? "chunk digests and keyframes" : "every record";
   if (o.json) {
-    nlohmann::ordered_json j{{"identical", r.identical}, {"events", r.events}, {"note", r.note},
+    nlohmann::ordered_json j{{"identical", r.identical},
+                             {"events", r.events},
+                             {"note", r.note},
                              {"board_warnings", log.header.boardWarnings}};
     if (log.header.parent)
       j["branch"] = {{"parent_digest", log.header.parent->parentDigest}, {"event", log.header.parent->event}};
@@ -58,14 +60,16 @@ int compare(const replay::OpenedLog& log, const ReplayOptions& o) {
                 std::string(motionModelName(log.header.model)).c_str(), compared);
     if (!r.note.empty()) std::printf("note: %s\n", r.note.c_str());
     if (log.header.parent)
-      std::printf("note: a branch log, taken at event %llu of the log whose checksum is %016llx; its events are "
-                  "counted from that log's start\n",
-                  static_cast<unsigned long long>(log.header.parent->event),
-                  static_cast<unsigned long long>(log.header.parent->parentDigest));
+      std::printf(
+          "note: a branch log, taken at event %llu of the log whose checksum is %016llx; its events are "
+          "counted from that log's start\n",
+          static_cast<unsigned long long>(log.header.parent->event),
+          static_cast<unsigned long long>(log.header.parent->parentDigest));
     if (!log.header.boardWarnings.empty())
-      std::printf("note: the board was read leniently (%zu warnings, above): this is a run of the board as read, "
-                  "not of the file as written\n",
-                  log.header.boardWarnings.size());
+      std::printf(
+          "note: the board was read leniently (%zu warnings, above): this is a run of the board as read, "
+          "not of the file as written\n",
+          log.header.boardWarnings.size());
     return kExitOk;
   }
   std::printf("DIFFERENT: %s\n", r.where.c_str());

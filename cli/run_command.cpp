@@ -29,14 +29,15 @@ void printHuman(const std::string& board, const RunOptions& o, const RunSummary&
 
 void printJson(const std::vector<std::string>& boardWarnings, const RunOptions& o, const RunSummary& s, double wall) {
   nlohmann::ordered_json events;
-  for (int k = 0; k < kEventKindCount; ++k) events[std::string(eventKindName(EventKind(k)))] = s.executed[std::size_t(k)];
+  for (int k = 0; k < kEventKindCount; ++k)
+    events[std::string(eventKindName(EventKind(k)))] = s.executed[std::size_t(k)];
   events["total"] = s.total;
   nlohmann::ordered_json balls = nlohmann::ordered_json::array();
   for (const BallState& b : s.balls)
     balls.push_back({{"name", b.name}, {"x", b.x}, {"y", b.y}, {"vx", b.vx}, {"vy", b.vy}, {"captured", b.captured}});
-  nlohmann::ordered_json out{{"model", o.model}, {"precision", o.precision}, {"time", s.time}, {"events", events},
-                             {"balls", balls},   {"energy", s.energy},       {"wall_seconds", wall},
-                             {"warnings", boardWarnings}};
+  nlohmann::ordered_json out{{"model", o.model},     {"precision", o.precision}, {"time", s.time},
+                             {"events", events},     {"balls", balls},           {"energy", s.energy},
+                             {"wall_seconds", wall}, {"warnings", boardWarnings}};
   std::cout << out.dump(2) << '\n';
 }
 

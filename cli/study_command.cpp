@@ -81,10 +81,10 @@ int studyCommand(const StudyOptions& o) {
     if (!report.bench.empty()) printKernels(verify::kernelFigures(report.bench), report.bench.figures.size());
     for (const verify::SceneReport& s : report.scenes) {
       if (const auto c = verify::compareBallisticDoubleWithBox2d(s))
-        std::cout << "box2d     " << s.scene.name << ": ballistic double " << c->oursCost << " s/s, error " << c->oursError
-                  << " L; Box2D at equal error " << (c->speedupIsBound ? ">= " : "") << c->speedupAtEqualError
-                  << "x the cost, at equal cost " << (c->accuracyGainIsBound ? ">= " : "") << c->accuracyGainAtEqualCost
-                  << "x the error\n";
+        std::cout << "box2d     " << s.scene.name << ": ballistic double " << c->oursCost << " s/s, error "
+                  << c->oursError << " L; Box2D at equal error " << (c->speedupIsBound ? ">= " : "")
+                  << c->speedupAtEqualError << "x the cost, at equal cost " << (c->accuracyGainIsBound ? ">= " : "")
+                  << c->accuracyGainAtEqualCost << "x the error\n";
     }
   } catch (const verify::StudyInputError& e) {
     std::cerr << "gizmo study: " << e.what() << '\n';

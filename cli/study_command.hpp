@@ -7,10 +7,10 @@
 namespace gizmo::cli {
 
 struct StudyOptions {
-  std::string scenes;                // a folder holding suite.txt; empty: the built-in suite
+  std::string scenes;  // a folder holding suite.txt; empty: the built-in suite
   std::string out = "study-results";
   bool quick = false;
-  std::vector<std::string> bench;    // gizmo_bench JSON files (--bench, repeatable): the Kernels part
+  std::vector<std::string> bench;  // gizmo_bench JSON files (--bench, repeatable): the Kernels part
 };
 int studyCommand(const StudyOptions& options);
 

@@ -7,10 +7,10 @@
 
 #include "board_input.hpp"
 #include "gizmo/replay/format_error.hpp"
-#include "log_view.hpp"
 #include "gizmo/replay/replay.hpp"
 #include "gizmo/verify/certify.hpp"
 #include "gizmo/verify/ladder.hpp"
+#include "log_view.hpp"
 
 namespace gizmo::cli {
 namespace {
@@ -47,10 +47,11 @@ void printHuman(const std::string& board, const VerifyOptions& o, const verify::
   for (const std::string& n : r.notes) std::printf("note       %s\n", n.c_str());
   if (r.certified) {
     const verify::CertifiedSummary& c = *r.certified;
-    std::printf("certified  the double run's decisions: %llu of %llu certified, %llu not certified, %llu ties, %llu wrong\n",
-                static_cast<unsigned long long>(c.certified), static_cast<unsigned long long>(c.decisions),
-                static_cast<unsigned long long>(c.notCertified), static_cast<unsigned long long>(c.ties),
-                static_cast<unsigned long long>(c.wrong));
+    std::printf(
+        "certified  the double run's decisions: %llu of %llu certified, %llu not certified, %llu ties, %llu wrong\n",
+        static_cast<unsigned long long>(c.certified), static_cast<unsigned long long>(c.decisions),
+        static_cast<unsigned long long>(c.notCertified), static_cast<unsigned long long>(c.ties),
+        static_cast<unsigned long long>(c.wrong));
     if (!c.firstWrong.empty()) std::printf("           first: %s\n", c.firstWrong.c_str());
   }
   std::printf("\n%-12s %9s %9s %12s %10s %10s %10s %9s %11s %9s\n", "precision", "compared", "horizon", "horizon t/s",
@@ -59,7 +60,10 @@ void printHuman(const std::string& board, const VerifyOptions& o, const verify::
     std::printf("%-12s %9llu %9llu %12.6g %10.3g %10.3g %10.3g %9.4f %11.4g %9.3g%s\n", p.precision.c_str(),
                 static_cast<unsigned long long>(p.compared), static_cast<unsigned long long>(p.horizonEvents),
                 p.horizonTime, p.maxTimeError, p.maxPositionError, p.energyDrift, p.wallSeconds, p.eventsPerSecond,
-                p.costRatio, p.reference ? "  (reference)" : p.agreesThroughout ? "  (agrees throughout)" : "");
+                p.costRatio,
+                p.reference          ? "  (reference)"
+                : p.agreesThroughout ? "  (agrees throughout)"
+                                     : "");
     if (!p.difference.empty()) std::printf("  first difference: %s\n", p.difference.c_str());
     if (!p.stopped.empty()) std::printf("  stopped: %s\n", p.stopped.c_str());
   }
@@ -68,7 +72,7 @@ void printHuman(const std::string& board, const VerifyOptions& o, const verify::
 nlohmann::ordered_json certifiedJson(const std::optional<verify::CertifiedSummary>& c) {
   if (!c) return nullptr;
   return {{"decisions", c->decisions}, {"certified", c->certified}, {"not_certified", c->notCertified},
-          {"ties", c->ties}, {"wrong", c->wrong}, {"first_wrong", c->firstWrong}};
+          {"ties", c->ties},           {"wrong", c->wrong},         {"first_wrong", c->firstWrong}};
 }
 
 void printJson(const CheckedRun& run, const VerifyOptions& o, const verify::LadderReport& r) {

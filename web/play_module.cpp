@@ -25,6 +25,7 @@
 #include <string_view>
 #include <vector>
 
+#include "chunk_outbox.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/core/run/run.hpp"
@@ -33,7 +34,6 @@
 #include "gizmo/replay/branch_start.hpp"
 #include "gizmo/replay/recorder.hpp"
 #include "gizmo/replay/replay.hpp"
-#include "chunk_outbox.hpp"
 #include "play_data.hpp"
 #include "render_player_data.hpp"
 
@@ -42,18 +42,18 @@ namespace {
 using gizmo::GameBoard;
 
 struct Game {
-  gizmo::RunRequest request;  // keys: every input given so far; duration: set when a log is written
+  gizmo::RunRequest request;          // keys: every input given so far; duration: set when a log is written
   std::vector<std::string> warnings;  // the board reader's, for the log's header
   std::unique_ptr<GameBoard<double>> board;
-  ChunkOutbox kept;  // the chunks the game's Recorder has closed, until the page takes them
+  ChunkOutbox kept;       // the chunks the game's Recorder has closed, until the page takes them
   bool recording = true;  // off only for timing the core alone (bench/play_speed.mjs)
   std::unique_ptr<gizmo::replay::Recorder<double>> recorder;  // after board and kept: goes first
   std::int64_t ticksDone = 0;
-  std::string stopped;  // why the board stopped (a stall), empty while it runs
-  double stoppedIn = 0;  // the end of the ticks the board was running when it stopped
-  bool memoryShort = false;  // stopped because the module's memory ran short
-  std::vector<std::uint8_t> saved;  // the last log gp_save() wrote
-  double savedSplit = -1;  // where the page puts the chunks it took into it (−1: saved is whole)
+  std::string stopped;               // why the board stopped (a stall), empty while it runs
+  double stoppedIn = 0;              // the end of the ticks the board was running when it stopped
+  bool memoryShort = false;          // stopped because the module's memory ran short
+  std::vector<std::uint8_t> saved;   // the last log gp_save() wrote
+  double savedSplit = -1;            // where the page puts the chunks it took into it (−1: saved is whole)
   std::vector<std::uint8_t> handed;  // the chunks gp_take_chunks() handed the page last
   // The log the page opened or took over (the parent of a branch), and, once it is taken over,
   // where: the branch's origin, the request it was taken with, and how many of request.keys are
@@ -67,8 +67,8 @@ struct Game {
 
 std::unique_ptr<Game> game;
 std::vector<std::uint8_t> incoming;  // the bytes of a log the page hands over (gp_buffer)
-std::string text;             // the last message or name list handed to the page
-std::vector<double> numbers;  // the last array handed to the page
+std::string text;                    // the last message or name list handed to the page
+std::vector<double> numbers;         // the last array handed to the page
 
 const char* say(std::string message) {
   text = std::move(message);
@@ -88,8 +88,8 @@ std::int64_t ticksBy(double t, double maxTick, std::int64_t done) {
 
 void build() {
   game->recorder.reset();
-  game->board = gizmo::prepareRun<double>(gizmo::RunRequest{game->request.board, game->request.model,
-                                                           game->request.maxTick, 0.0, {}});
+  game->board = gizmo::prepareRun<double>(
+      gizmo::RunRequest{game->request.board, game->request.model, game->request.maxTick, 0.0, {}});
   game->kept = ChunkOutbox();
   if (game->recording) {
     game->recorder = std::make_unique<gizmo::replay::Recorder<double>>(game->kept, *game->board);
@@ -298,9 +298,7 @@ EMSCRIPTEN_KEEPALIVE int gp_take_over(double at, int fromBuffer) {
 // Where the game's log starts (0, or the branch's tick boundary) and, for a branch, the parent's
 // events before the branch point (else −1).
 EMSCRIPTEN_KEEPALIVE double gp_start_time() { return game ? game->startTime : 0.0; }
-EMSCRIPTEN_KEEPALIVE double gp_branch_event() {
-  return game && game->origin ? double(game->origin->event) : -1.0;
-}
+EMSCRIPTEN_KEEPALIVE double gp_branch_event() { return game && game->origin ? double(game->origin->event) : -1.0; }
 
 // A key pressed (up = 0) or released (up = 1) at board time `time`, which must be later than the
 // board's present (the ticks up to it are not yet run): 1 taken, 0 not (the page tries again at
@@ -362,7 +360,8 @@ EMSCRIPTEN_KEEPALIVE const double* gp_swings() {
     const double now = game->board->now();
     for (std::size_t g = 0; g < game->board->gizmoCount(); ++g) {
       const auto& gizmo = game->board->gizmo(gizmo::GizmoId(g));
-      const bool flipper = gizmo.kind() == gizmo::GizmoKind::LeftFlipper || gizmo.kind() == gizmo::GizmoKind::RightFlipper;
+      const bool flipper =
+          gizmo.kind() == gizmo::GizmoKind::LeftFlipper || gizmo.kind() == gizmo::GizmoKind::RightFlipper;
       if (flipper) numbers.push_back(static_cast<const gizmo::Flipper<double>&>(gizmo).progressAt(now));
       else if (gizmo.kind() == gizmo::GizmoKind::Spinner)
         numbers.push_back(static_cast<const gizmo::Spinner<double>&>(gizmo).angleAt(now) / gizmo::kSpinnerTurnRate);

@@ -7,8 +7,9 @@
 
 namespace gizmo::cli {
 
-#define GIZMO_DRAWING_KIND_IS_COMPLETE(Name, stem)                                         \
-  static_assert(DrawingKindEntry<KindDrawing<GizmoType::Name>>, "kind " #Name ": cli/kinds/" #stem \
+#define GIZMO_DRAWING_KIND_IS_COMPLETE(Name, stem)              \
+  static_assert(DrawingKindEntry<KindDrawing<GizmoType::Name>>, \
+                "kind " #Name ": cli/kinds/" #stem              \
                 ".hpp lacks part of what DrawingKindEntry (cli/kinds/kind_drawing.hpp) asks");
 GIZMO_KINDS(GIZMO_DRAWING_KIND_IS_COMPLETE)
 #undef GIZMO_DRAWING_KIND_IS_COMPLETE

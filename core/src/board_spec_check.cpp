@@ -52,9 +52,7 @@ bool earlier(const SourcePos& a, const SourcePos& b) {
 }
 
 // " from line N" when the statement has a position, else nothing.
-std::string fromLine(const SourcePos& p) {
-  return p.line > 0 ? " from line " + std::to_string(p.line) : std::string();
-}
+std::string fromLine(const SourcePos& p) { return p.line > 0 ? " from line " + std::to_string(p.line) : std::string(); }
 
 std::string describe(const GizmoSpec& g) { return std::string(gizmoTypeWord(g.type)) + " " + quoted(g.name); }
 std::string describe(const BallSpec& b) { return "ball " + quoted(b.name); }
@@ -110,8 +108,7 @@ bool insideConvex(double px, double py, const std::vector<Vec2<double>>& poly) {
   for (std::size_t i = 0; i < poly.size(); ++i) {
     const Vec2<double>& a = poly[i];
     const Vec2<double>& b = poly[(i + 1) % poly.size()];
-    const Exact c = (Exact(b.x) - Exact(a.x)) * (qy - Exact(a.y)) -
-                       (Exact(b.y) - Exact(a.y)) * (qx - Exact(a.x));
+    const Exact c = (Exact(b.x) - Exact(a.x)) * (qy - Exact(a.y)) - (Exact(b.y) - Exact(a.y)) * (qx - Exact(a.x));
     if (c > 0) positive = true;
     if (c < 0) negative = true;
     if (positive && negative) return false;
@@ -224,7 +221,7 @@ void checkGeometry(const BoardSpec& board, Collector& out) {
   constexpr int N = kBoardSize;
   constexpr std::size_t kPerCell = 4;  // gizmos kept per cell for ball tests (more means overlaps anyway)
   const std::size_t none = static_cast<std::size_t>(-1);
-  std::vector<std::size_t> owner(N * N, none);            // first gizmo (order position) per cell
+  std::vector<std::size_t> owner(N * N, none);             // first gizmo (order position) per cell
   std::vector<std::vector<std::size_t>> occupants(N * N);  // gizmo indices, at most kPerCell
   std::vector<std::optional<PreparedShape>> shapes(board.gizmos.size());
   std::vector<std::array<long long, 4>> boxes(board.gizmos.size());  // clipped x0, y0, x1, y1
@@ -235,8 +232,8 @@ void checkGeometry(const BoardSpec& board, Collector& out) {
     const GizmoSpec& g = board.gizmos[gi];
     bool placeable = true;
     if (!validOrientation(g.orientation)) {
-      out.add(g.where, describe(g) + " has orientation " + std::to_string(g.orientation) +
-                           "; it must be 0, 90, 180 or 270");
+      out.add(g.where,
+              describe(g) + " has orientation " + std::to_string(g.orientation) + "; it must be 0, 90, 180 or 270");
       placeable = false;
     } else if (g.type == GizmoType::Absorber && g.orientation != 0) {
       out.add(g.where, describe(g) + " has orientation " + std::to_string(g.orientation) +
@@ -258,8 +255,8 @@ void checkGeometry(const BoardSpec& board, Collector& out) {
     if (!placeable) continue;
 
     if (g.type == GizmoType::Portal && (g.exitX < 0 || g.exitY < 0 || g.exitX >= N || g.exitY >= N)) {
-      out.add(g.where, describe(g) + " has its exit at cell " + std::to_string(g.exitX) + "," + std::to_string(g.exitY) +
-                           ", which is not on the board (cells 0..19 in both)");
+      out.add(g.where, describe(g) + " has its exit at cell " + std::to_string(g.exitX) + "," +
+                           std::to_string(g.exitY) + ", which is not on the board (cells 0..19 in both)");
     }
     const long long x0 = g.x, y0 = g.y, x1 = x0 + g.width, y1 = y0 + g.height;
     if (x0 < 0 || y0 < 0 || x1 > N || y1 > N) {
@@ -313,7 +310,8 @@ void checkGeometry(const BoardSpec& board, Collector& out) {
     usable[bi] = 1;
     const double lo = kBallRadius, hi = kBoardSize - kBallRadius;
     if (!(b.x >= lo && b.x <= hi && b.y >= lo && b.y <= hi)) {
-      out.add(b.where, describe(b) + at(b) + " is not inside the board: its centre must be at least 0.25 L from every wall");
+      out.add(b.where,
+              describe(b) + at(b) + " is not inside the board: its centre must be at least 0.25 L from every wall");
     }
     // Candidate gizmos: those in the cells the ball's disc can reach (with margin).
     const double fx0 = std::max(0.0, std::floor(b.x - 0.5)), fx1 = std::min(N - 1.0, std::floor(b.x + 0.5));
@@ -400,12 +398,9 @@ void checkConnections(const BoardSpec& board, Collector& out) {
   };
   auto checkTarget = [&](const SourcePos& where, const std::string& what, const std::string& target) {
     if (gizmos.count(target)) return;
-    if (target == kOuterWallsName)
-      out.add(where, what + " cannot be the outer walls: they have no action");
-    else if (balls.count(target))
-      out.add(where, what + " " + quoted(target) + " is a ball; a ball has no action");
-    else
-      out.add(where, what + " " + quoted(target) + " is not a gizmo on this board" + hint(target));
+    if (target == kOuterWallsName) out.add(where, what + " cannot be the outer walls: they have no action");
+    else if (balls.count(target)) out.add(where, what + " " + quoted(target) + " is a ball; a ball has no action");
+    else out.add(where, what + " " + quoted(target) + " is not a gizmo on this board" + hint(target));
   };
 
   std::map<std::pair<std::string, std::string>, SourcePos> seen;
@@ -414,14 +409,14 @@ void checkConnections(const BoardSpec& board, Collector& out) {
     if (c.source != kOuterWallsName && !gizmos.count(c.source)) {
       if (balls.count(c.source))
         out.add(c.where, "connection source " + quoted(c.source) + " is a ball; a ball triggers nothing");
-      else
-        out.add(c.where, "connection source " + quoted(c.source) + " is not a gizmo on this board" + hint(c.source));
+      else out.add(c.where, "connection source " + quoted(c.source) + " is not a gizmo on this board" + hint(c.source));
     }
     checkTarget(c.where, "connection target", c.target);
     auto [it, inserted] = seen.emplace(std::make_pair(c.source, c.target), c.where);
     if (!inserted) {
       const std::string where = it->second.line > 0 ? " (first on line " + std::to_string(it->second.line) + ")" : "";
-      out.add(c.where, "the connection from " + quoted(c.source) + " to " + quoted(c.target) + " is listed twice" + where);
+      out.add(c.where,
+              "the connection from " + quoted(c.source) + " to " + quoted(c.target) + " is listed twice" + where);
     }
   }
   std::map<std::tuple<int, int, std::string>, SourcePos> seenKeys;

@@ -12,7 +12,6 @@
 
 namespace gizmo {
 
-
 namespace {
 
 // v's shortest round-trip digits d1 d2 … dn and exponent e: |v| = d1.d2…dn × 10^e, as
@@ -94,7 +93,8 @@ std::string scientificText(const Digits& d) {
   out += d.digits.substr(0, 1);
   if (d.digits.size() > 1) out += "." + d.digits.substr(1);
   char exponent[16];
-  std::snprintf(exponent, sizeof exponent, "e%c%02d", d.exponent < 0 ? '-' : '+', d.exponent < 0 ? -d.exponent : d.exponent);
+  std::snprintf(exponent, sizeof exponent, "e%c%02d", d.exponent < 0 ? '-' : '+',
+                d.exponent < 0 ? -d.exponent : d.exponent);
   return out + exponent;
 }
 
@@ -121,6 +121,5 @@ DecimalParse parseDecimalDouble(std::string_view text, double& value) {
   value = v;
   return DecimalParse::Ok;
 }
-
 
 }  // namespace gizmo

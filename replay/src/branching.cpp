@@ -8,9 +8,9 @@
 // after it.
 #include <algorithm>
 
-#include "run_start.hpp"
 #include "gizmo/replay/branch_start.hpp"
 #include "gizmo/replay/recorder.hpp"
+#include "run_start.hpp"
 
 namespace gizmo::replay {
 
@@ -65,8 +65,9 @@ std::vector<TimedKey> queueOrder(const RunRequest& request) {
   std::vector<TimedKey> keys;
   for (const TimedKey& k : request.keys)
     if (k.time <= request.duration) keys.push_back(k);
-  std::stable_sort(keys.begin(), keys.end(),
-                   [](const TimedKey& x, const TimedKey& y) { return fromDouble<Real>(x.time) < fromDouble<Real>(y.time); });
+  std::stable_sort(keys.begin(), keys.end(), [](const TimedKey& x, const TimedKey& y) {
+    return fromDouble<Real>(x.time) < fromDouble<Real>(y.time);
+  });
   return keys;
 }
 
@@ -82,7 +83,8 @@ std::vector<TimedKey> appliedKeys(const RunRequest& parent, const BoardState<Rea
   const std::vector<TimedKey> order = queueOrder<Real>(parent);
   std::vector<TimedKey> applied(order.begin(), order.begin() + std::ptrdiff_t(at.nextInput));
   for (const Event<Real>& e : at.events) {
-    const auto waiting = std::find_if(applied.begin(), applied.end(), [&](const TimedKey& k) { return sameInput(k, e); });
+    const auto waiting =
+        std::find_if(applied.begin(), applied.end(), [&](const TimedKey& k) { return sameInput(k, e); });
     if (waiting != applied.end()) applied.erase(waiting);
   }
   return applied;
@@ -141,7 +143,8 @@ BranchResult branchAs(const OpenedLog& parent, const BranchRequest& request, Chu
 template <class Real>
 BranchStart<Real> startBranch(const OpenedLog& parent, const BranchRequest& request) {
   if (scalarName<Real>() != parent.header.scalar)
-    throw BranchError("the log was made with " + parent.header.scalar + ", a branch here computes " + scalarName<Real>());
+    throw BranchError("the log was made with " + parent.header.scalar + ", a branch here computes " +
+                      scalarName<Real>());
   const std::optional<RunEnd>& end = parent.reader.end();
   if (!end) throw BranchError(parent.reader.truncation() + ": a branch is taken from a whole log");
   if (request.at.events && *request.at.events > end->events)

@@ -41,8 +41,8 @@ void measure(const DecisionView& x, const DecisionView& y, DiffReport& r) {
                                                                            x.balls[i].y.value - y.balls[i].y.value));
 }
 
-void count(std::vector<std::pair<std::string, std::pair<std::uint64_t, std::uint64_t>>>& counts,
-           const DecisionView& d, bool second) {
+void count(std::vector<std::pair<std::string, std::pair<std::uint64_t, std::uint64_t>>>& counts, const DecisionView& d,
+           bool second) {
   std::string key(decisionTypeName(d.type));
   if (d.type == DecisionType::Executed) key += " " + std::string(eventKindName(d.kind));
   auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == key; });
@@ -84,7 +84,8 @@ CommonStart commonStart(const OpenedLog& a, const OpenedLog& b, std::vector<std:
   } else {
     const OpenedLog& branch = b.header.parent ? b : a;
     char digest[17];
-    std::snprintf(digest, sizeof digest, "%016llx", static_cast<unsigned long long>(branch.header.parent->parentDigest));
+    std::snprintf(digest, sizeof digest, "%016llx",
+                  static_cast<unsigned long long>(branch.header.parent->parentDigest));
     throw BranchError(std::string(b.header.parent ? "the second" : "the first") + " log is a branch of another log " +
                       "(digest " + digest + "), not of the " + (b.header.parent ? "first" : "second") +
                       ": a branch is compared only with its parent or a branch of the same parent");
@@ -107,8 +108,9 @@ DiffReport diffLogs(const OpenedLog& a, const OpenedLog& b, std::size_t context,
                       0);
   if (a.header.board != b.header.board) r.notes.push_back("the logs are of different boards");
   if (a.header.model != b.header.model) r.notes.push_back("the logs use different motion models");
-  if (!r.sameScalar) r.notes.push_back("different scalars (" + a.header.scalar + ", " + b.header.scalar +
-                                       "): decisions are compared without their values, whose differences are measured");
+  if (!r.sameScalar)
+    r.notes.push_back("different scalars (" + a.header.scalar + ", " + b.header.scalar +
+                      "): decisions are compared without their values, whose differences are measured");
   if (a.header.keys.size() != b.header.keys.size()) r.notes.push_back("the logs have different key input");
 
   const CommonStart start = commonStart(a, b, r.notes);

@@ -6,10 +6,10 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include "gizmo/core/std_compat.hpp"
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+#include "gizmo/core/std_compat.hpp"
 
 #include "gizmo/replay/bytes.hpp"
 #include "gizmo/replay/checksum.hpp"
@@ -271,7 +271,8 @@ std::vector<std::uint8_t> LogReader::readFrame(std::uint64_t offset, std::uint8_
   ByteReader r(std::span<const std::uint8_t>(head, kFrameHeaderSize));
   const std::uint8_t got = r.u8();
   const std::uint32_t length = r.u32();
-  if (got != type) throw FormatError("expected a " + typeName(type) + " frame, found type " + std::to_string(got), offset);
+  if (got != type)
+    throw FormatError("expected a " + typeName(type) + " frame, found type " + std::to_string(got), offset);
   if (length > kMaxFramePayload) throw FormatError("absurd frame length " + std::to_string(length), offset + 1);
   if (size - offset - kFrameHeaderSize - kFrameChecksumSize < length)
     throw FormatError("the " + typeName(type) + " frame is cut off", offset);
@@ -305,7 +306,8 @@ bool LogReader::readThroughIndex() {
   for (std::size_t i = 0; i < chunks_.size(); ++i) {
     const std::uint64_t at = chunks_[i].offset;
     const bool ordered = i == 0 ? at == firstChunk_ : at > previous;
-    if (!ordered || at >= indexOffset) throw FormatError("the index places chunk " + std::to_string(i) + " wrongly", indexOffset);
+    if (!ordered || at >= indexOffset)
+      throw FormatError("the index places chunk " + std::to_string(i) + " wrongly", indexOffset);
     previous = at;
   }
   if (chunks_.empty() && indexOffset != firstChunk_) throw FormatError("the index lists no chunks", indexOffset);
@@ -364,14 +366,15 @@ void LogReader::walkFrames(std::uint64_t from) {
     if (length > kMaxFramePayload) throw FormatError("absurd frame length " + std::to_string(length), at + 1);
     if (size - at < kFrameHeaderSize + std::uint64_t(length) + kFrameChecksumSize)
       return cutOff(type == std::uint8_t(FrameType::Chunk) ? "inside chunk " + std::to_string(chunks_.size())
-                                                             : "inside its index");
+                                                           : "inside its index");
     std::uint64_t next = 0;
     const std::vector<std::uint8_t> payload = readFrame(at, type, &next);
     if (type == std::uint8_t(FrameType::Index)) {
       // A complete index without a readable trailer: either the trailer is cut off, or damaged.
       const std::vector<ChunkEntry> walked = chunks_;
       parseIndex(payload);
-      if (!std::equal(walked.begin(), walked.end(), chunks_.begin(), chunks_.end(), sameEntry)) throw FormatError("the index disagrees with the chunks", at);
+      if (!std::equal(walked.begin(), walked.end(), chunks_.begin(), chunks_.end(), sameEntry))
+        throw FormatError("the index disagrees with the chunks", at);
       chunksEnd_ = at;  // the index's entries are the walked ones, with their digests
       if (size - next >= kTrailerSize) throw FormatError("the trailer is corrupt", size - kTrailerSize);
       at = next;
@@ -390,7 +393,8 @@ std::vector<std::uint8_t> LogReader::chunkPayload(std::size_t i) const {
   std::uint64_t next = 0;
   std::vector<std::uint8_t> payload = readFrame(e.offset, std::uint8_t(FrameType::Chunk), &next);
   const std::uint64_t expected = i + 1 < chunks_.size() ? chunks_[i + 1].offset : chunksEnd_;
-  if (next != expected) throw FormatError("chunk " + std::to_string(i) + " does not end where the next begins", e.offset);
+  if (next != expected)
+    throw FormatError("chunk " + std::to_string(i) + " does not end where the next begins", e.offset);
   ChunkPreamble p;
   readPreamble(payload, p);
   if (!sameEntry(entryOf(p, e.offset), e) || p.hasKeyframe != (i > 0 || isBranch()))

@@ -116,7 +116,8 @@ LogHeader decodeHeader(std::span<const std::uint8_t> payload, std::uint16_t vers
   const std::string params = readString(r, 4096, "parameters");
   h.params.assign(params.begin(), params.end());
   if (version >= kBranchFormatVersion) {
-    if (r.atEnd()) throw FormatError("header: a branch log (format version 5) whose header does not name its parent", r.position());
+    if (r.atEnd())
+      throw FormatError("header: a branch log (format version 5) whose header does not name its parent", r.position());
     BranchOrigin parent;
     parent.parentDigest = r.u64();
     parent.event = r.varint();

@@ -9,8 +9,8 @@
 #include "gizmo/core/std_compat.hpp"
 #include "gizmo/replay/chunk.hpp"
 #include "gizmo/replay/format_error.hpp"
-#include "gizmo/replay/replay.hpp"
 #include "gizmo/replay/log_header.hpp"
+#include "gizmo/replay/replay.hpp"
 
 namespace gizmo::replay::detail {
 
@@ -86,7 +86,8 @@ template <class F>
 decltype(auto) withLogScalar(const OpenedLog& log, F&& f) {
   return withRecordablePrecision(log.precision, [&]<class Real>() -> decltype(auto) {
     if (scalarName<Real>() != log.header.scalar)
-      throw FormatError("the log was made with " + log.header.scalar + ", this build computes " + scalarName<Real>(), 0);
+      throw FormatError("the log was made with " + log.header.scalar + ", this build computes " + scalarName<Real>(),
+                        0);
     if (scalarFormat<Real>() != log.header.format)
       throw FormatError("the log's " + log.header.scalar + " is " + log.header.format + ", this build's " +
                             scalarName<Real>() + " is " + scalarFormat<Real>() +

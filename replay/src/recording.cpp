@@ -1,6 +1,6 @@
 // Recording a run into a replay log (replay.hpp: recordRun, recordHeader).
-#include "log_views.hpp"
 #include "gizmo/replay/recorder.hpp"
+#include "log_views.hpp"
 
 namespace gizmo::replay {
 namespace {

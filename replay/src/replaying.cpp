@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <map>
 
-#include "run_start.hpp"
 #include "gizmo/replay/decision_digest.hpp"
 #include "gizmo/replay/recorder.hpp"
+#include "run_start.hpp"
 
 namespace gizmo::replay {
 namespace {
@@ -53,8 +53,11 @@ template <class Real>
 class ChunkSide {
  public:
   ChunkSide(std::span<const std::uint8_t> payload, const OpenedLog& log, const PhysicsParams<Real>& params)
-      : payload_(payload), log_(log), opened_(openChunk<Real>(payload)),
-        records_(payload, opened_, params, maxQueued(log)), events_(opened_.preamble.eventsDone),
+      : payload_(payload),
+        log_(log),
+        opened_(openChunk<Real>(payload)),
+        records_(payload, opened_, params, maxQueued(log)),
+        events_(opened_.preamble.eventsDone),
         time_(opened_.keyframe ? opened_.keyframe->now : Real(0)) {}
 
   const OpenedChunk<Real>& opened() const { return opened_; }
@@ -168,8 +171,7 @@ class DigestChecker final : public BoardObserver<Real> {
       closeChunk();
       readChunk(++chunk_);
       const std::vector<std::uint8_t> ours = stateBytes(board_.saveState());
-      if (!sameElements(ours, start_.keyframe) || start_.preamble.eventsDone != board_.executedTotal())
-        throw Differs{};
+      if (!sameElements(ours, start_.keyframe) || start_.preamble.eventsDone != board_.executedTotal()) throw Differs{};
     }
   }
 
@@ -273,7 +275,8 @@ ReplayReport replayAs(const OpenedLog& log, ReplayMethod method) {
   }
   ComparingSink sink(log.reader);
   std::optional<Recorder<Real>> recorder;
-  if (log.reader.isBranch()) recorder.emplace(sink, *board, typename Recorder<Real>::Start{start.ticksDone, start.decisionsDone});
+  if (log.reader.isBranch())
+    recorder.emplace(sink, *board, typename Recorder<Real>::Start{start.ticksDone, start.decisionsDone});
   else recorder.emplace(sink, *board);
   board->setObserver(&*recorder);
   bool completed = true;

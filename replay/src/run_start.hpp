@@ -79,8 +79,8 @@ SeekStart<Real> seekStart(const OpenedLog& log, const SeekTarget& target) {
   if (target.time && fromDouble<Real>(*target.time) < s.board->now() && s.chunk > 0)
     s.board = boardAtChunk<Real>(log, --s.chunk, &s.ticksDone);
   // A branch log holds nothing before its first keyframe.
-  const bool before = target.events ? *target.events < chunks[0].eventsDone
-                                    : fromDouble<Real>(*target.time) < s.board->now();
+  const bool before =
+      target.events ? *target.events < chunks[0].eventsDone : fromDouble<Real>(*target.time) < s.board->now();
   if (log.reader.isBranch() && s.chunk == 0 && before)
     throw std::out_of_range("the branch log starts at event " + std::to_string(chunks[0].eventsDone) + ", time " +
                             std::to_string(toDouble(s.board->now())) + " s: it holds nothing before");

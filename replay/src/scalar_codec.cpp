@@ -9,24 +9,20 @@ namespace detail {
 
 void throwBadControl(std::size_t offset, std::uint8_t control, std::size_t width) {
   throw FormatError("invalid scalar control byte " + std::to_string(control) + " (leading " +
-                        std::to_string(control >> 4) + " + trailing " +
-                        std::to_string(control & 0x0F) + " zero bytes, for a " +
-                        std::to_string(width) + "-byte scalar)",
+                        std::to_string(control >> 4) + " + trailing " + std::to_string(control & 0x0F) +
+                        " zero bytes, for a " + std::to_string(width) + "-byte scalar)",
                     offset);
 }
 
 void throwRedundantControl(std::size_t offset) {
-  throw FormatError("scalar control byte does not count all zero bytes (non-canonical encoding)",
-                    offset);
+  throw FormatError("scalar control byte does not count all zero bytes (non-canonical encoding)", offset);
 }
 
 void throwNonCanonicalLongDouble(std::size_t offset) {
-  throw FormatError("not a canonical x87 extended value (integer bit disagrees with exponent)",
-                    offset);
+  throw FormatError("not a canonical x87 extended value (integer bit disagrees with exponent)", offset);
 }
 
-std::string hexFloatText(bool negative, unsigned leading, std::string fractionDigits,
-                         long long exponent) {
+std::string hexFloatText(bool negative, unsigned leading, std::string fractionDigits, long long exponent) {
   while (!fractionDigits.empty() && fractionDigits.back() == '0') fractionDigits.pop_back();
   std::string out = negative ? "-0x" : "0x";
   out += static_cast<char>('0' + leading);

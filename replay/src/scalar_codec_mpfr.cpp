@@ -84,20 +84,12 @@ MpfrReal ScalarCodec<MpfrReal>::read(ByteReader& in) {
   MpfrReal result;  // at the thread's current precision
   mpfr_ptr x = result.backend().data();
   switch (kind) {
-    case kNan:
-      mpfr_set_nan(x);
-      return result;
+    case kNan: mpfr_set_nan(x); return result;
     case kPlusInf:
-    case kMinusInf:
-      mpfr_set_inf(x, kind == kPlusInf ? 1 : -1);
-      return result;
-    case kZero:
-      mpfr_set_zero(x, readSign(in) ? -1 : 1);
-      return result;
-    case kRegular:
-      break;
-    default:
-      throw FormatError("invalid MPFR value class " + std::to_string(kind), classAt);
+    case kMinusInf: mpfr_set_inf(x, kind == kPlusInf ? 1 : -1); return result;
+    case kZero: mpfr_set_zero(x, readSign(in) ? -1 : 1); return result;
+    case kRegular: break;
+    default: throw FormatError("invalid MPFR value class " + std::to_string(kind), classAt);
   }
 
   const bool negative = readSign(in);
@@ -106,9 +98,9 @@ MpfrReal ScalarCodec<MpfrReal>::read(ByteReader& in) {
   const std::size_t countAt = in.position();
   const std::uint64_t count = in.varint();
   if (count == 0 || count > kMaxMantissaBytes) {
-    throw FormatError("MPFR mantissa byte count " + std::to_string(count) + " outside 1.." +
-                          std::to_string(kMaxMantissaBytes),
-                      countAt);
+    throw FormatError(
+        "MPFR mantissa byte count " + std::to_string(count) + " outside 1.." + std::to_string(kMaxMantissaBytes),
+        countAt);
   }
   const std::size_t mantissaAt = in.position();
   const std::span<const std::uint8_t> bytes = in.span(static_cast<std::size_t>(count));
@@ -118,8 +110,7 @@ MpfrReal ScalarCodec<MpfrReal>::read(ByteReader& in) {
   const std::int64_t bits = static_cast<std::int64_t>(8 * (count - 1)) + std::bit_width(bytes.back());
   const long precision = mpfrBits();
   if (bits > precision) {
-    throw FormatError("MPFR mantissa of " + std::to_string(bits) +
-                          " bits does not fit the current precision of " +
+    throw FormatError("MPFR mantissa of " + std::to_string(bits) + " bits does not fit the current precision of " +
                           std::to_string(precision) + " bits",
                       mantissaAt);
   }
@@ -128,8 +119,7 @@ MpfrReal ScalarCodec<MpfrReal>::read(ByteReader& in) {
   const std::int64_t emin = mpfr_get_emin();
   const std::int64_t emax = mpfr_get_emax();
   if (exponent < emin - bits || exponent > emax - bits) {
-    throw FormatError("MPFR exponent " + std::to_string(exponent) + " outside the current range",
-                      exponentAt);
+    throw FormatError("MPFR exponent " + std::to_string(exponent) + " outside the current range", exponentAt);
   }
 
   Mpz m;
@@ -163,8 +153,7 @@ std::string exactText<MpfrReal>(const MpfrReal& value) {
     raw.resize(std::char_traits<char>::length(raw.c_str()));
     digits = std::string(digitCount - raw.size(), '0') + raw;  // restore leading zero digits
   }
-  return detail::hexFloatText(negative, 1, digits,
-                              exponent + static_cast<std::int64_t>(fractionBits));
+  return detail::hexFloatText(negative, 1, digits, exponent + static_cast<std::int64_t>(fractionBits));
 }
 
 }  // namespace gizmo::replay

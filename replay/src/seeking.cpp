@@ -74,8 +74,8 @@ StartView startView(const OpenedLog& log) {
       GizmoState<Real> st;
       gizmo.saveState(st);
       if (kind == GizmoKind::Spinner)
-        v.spinners.push_back(StartView::Turn{GizmoId(g), toDouble(st.reals.at(0)), toDouble(st.reals.at(1)),
-                                             st.ints.at(1) != 0});
+        v.spinners.push_back(
+            StartView::Turn{GizmoId(g), toDouble(st.reals.at(0)), toDouble(st.reals.at(1)), st.ints.at(1) != 0});
       else
         v.flippers.push_back(StartView::Swing{GizmoId(g), toDouble(st.reals.at(0)), toDouble(st.reals.at(1)),
                                               int(st.ints.at(0)), int(st.ints.at(1))});

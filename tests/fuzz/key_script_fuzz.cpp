@@ -24,7 +24,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       last = k.time;
     }
-  } catch (const gizmo::io::InputError&) {
-  }
+  } catch (const gizmo::io::InputError&) {}
   return 0;
 }

@@ -25,7 +25,8 @@
 namespace fz = gizmo::verify::fuzz;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::optional<gizmo::RunRequest> run = gizmo::fuzzing::simulation::readRun(std::string_view(reinterpret_cast<const char*>(data), size));
+  const std::optional<gizmo::RunRequest> run =
+      gizmo::fuzzing::simulation::readRun(std::string_view(reinterpret_cast<const char*>(data), size));
   if (!run) return 0;
   const std::vector<fz::Invariant> all(std::begin(fz::kAllInvariants), std::end(fz::kAllInvariants));
   const fz::InvariantRun result = fz::checkInvariants<double>(*run, all);

@@ -32,9 +32,10 @@ TEST(SimulationFuzzInput, ReadsTheHeaderTheKeysAndTheBoard) {
 }
 
 TEST(SimulationFuzzInput, RefusesWhatIsNotARunOfTheEnvelope) {
-  for (const char* header : {"run fast 0.05 0.5", "run ballistic 0.05", "run ballistic 0.05 0.5 1", "ballistic 0.05 0.5",
-                             "run ballistic 0.0001 0.5", "run ballistic 0.2 0.5", "run ballistic 0.05 0",
-                             "run ballistic 0.05 1.5", "run ballistic 0.05 nan", "run  ballistic 0.05 0.5"})
+  for (const char* header :
+       {"run fast 0.05 0.5", "run ballistic 0.05", "run ballistic 0.05 0.5 1", "ballistic 0.05 0.5",
+        "run ballistic 0.0001 0.5", "run ballistic 0.2 0.5", "run ballistic 0.05 0", "run ballistic 0.05 1.5",
+        "run ballistic 0.05 nan", "run  ballistic 0.05 0.5"})
     EXPECT_FALSE(read(std::string(header) + "\nboard\n" + kBoard)) << header;
   EXPECT_FALSE(read("run ballistic 0.05 0.5\n" + kBoard)) << "no line 'board'";
   EXPECT_FALSE(read("run ballistic 0.05 0.5\n0.1 sideways 32\nboard\n" + kBoard)) << "a bad key script";

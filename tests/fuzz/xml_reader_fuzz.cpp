@@ -12,7 +12,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const gizmo::io::ReadResult r =
         gizmo::io::readXmlBoard(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz.xml");
     gizmo::fuzzing::checkAcceptedBoard(r.board);
-  } catch (const gizmo::io::InputError&) {
-  }
+  } catch (const gizmo::io::InputError&) {}
   return 0;
 }

@@ -40,8 +40,8 @@ inline void requireProperty(const char* name, const RunRequest& run) {
   const verify::fuzz::PropertyResult r = p->check(run, Precision::Double);
   if (!r.holds)
     RC_FAIL(std::string(name) + " does not hold: " + r.message + "\n(rapidcheck seed " +
-            std::to_string(rc::detail::configuration().testParams.seed) + "; run again with RC_PARAMS=\"seed=" +
-            std::to_string(rc::detail::configuration().testParams.seed) + "\")");
+            std::to_string(rc::detail::configuration().testParams.seed) +
+            "; run again with RC_PARAMS=\"seed=" + std::to_string(rc::detail::configuration().testParams.seed) + "\")");
 }
 
 }  // namespace test

@@ -38,8 +38,8 @@ TEST(FuzzInvariants, AHundredBallsWithFrictionKeepThemAll) {
   // event-queue invariant checks that every pop is still the earliest pending event.
   RunRequest r;
   for (int i = 0; i < 100; ++i)
-    r.board.balls.push_back(BallSpec{"B" + std::to_string(i), 1.5 + 1.8 * (i % 10), 1.5 + 1.8 * (i / 10),
-                                     double(i % 7) - 3, double(i % 5) - 2, {}});
+    r.board.balls.push_back(BallSpec{
+        "B" + std::to_string(i), 1.5 + 1.8 * (i % 10), 1.5 + 1.8 * (i / 10), double(i % 7) - 3, double(i % 5) - 2, {}});
   r.duration = 0.3;
   const InvariantRun run = checkInvariants<double>(r, {std::begin(kAllInvariants), std::end(kAllInvariants)});
   EXPECT_TRUE(run.violations.empty()) << run.violations.front().message;

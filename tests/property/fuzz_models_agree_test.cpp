@@ -19,8 +19,8 @@ TEST(ModelsAgreeComparison, TheSameDecisionsAgree) {
 }
 
 TEST(ModelsAgreeComparison, IndependentHitsAFewUlpsApartMayComeInEitherOrder) {
-  const std::vector<PhysicalDecision> classic{hit("collision a=1 b=9", 0.5, -2), hit("collision a=3 b=8", 0.5 + 1e-14, 3),
-                                              hit("collision a=2 b=9", 0.75, 2)};
+  const std::vector<PhysicalDecision> classic{
+      hit("collision a=1 b=9", 0.5, -2), hit("collision a=3 b=8", 0.5 + 1e-14, 3), hit("collision a=2 b=9", 0.75, 2)};
   const std::vector<PhysicalDecision> ballistic{classic[1], classic[0], classic[2]};
   EXPECT_TRUE(compareModelDecisions(classic, ballistic).holds);
 }
@@ -48,12 +48,13 @@ TEST(ModelsAgreeComparison, AnExtraHitCountsUnlessItChangedNothing) {
 TEST(ModelsAgreeComparison, AnExtraHitThatChangedNothingButFiredATriggerPartsTheRuns) {
   // A ball at rest to within rounding touches a flipper (gizmo 2) in one model, firing its
   // trigger, and another surface in the other; the trigger's consequences come after.
-  const std::vector<PhysicalDecision> classic{hit("collision a=1 b=9", 0.5, -2), hit("collision a=6 b=9", 0.5, 1e-13, true),
-                                              hit("collision a=3 b=8", 0.6, 3)};
+  const std::vector<PhysicalDecision> classic{
+      hit("collision a=1 b=9", 0.5, -2), hit("collision a=6 b=9", 0.5, 1e-13, true), hit("collision a=3 b=8", 0.6, 3)};
   // (The trigger and its action are reported while the hit runs, before it.)
   const PhysicalDecision trigger = consequenceAt("trigger 2 -> 7", 0.5), action = consequenceAt("action 7", 0.5);
   const std::vector<PhysicalDecision> ballistic{hit("collision a=1 b=9", 0.5, -2), trigger, action,
-                                                hit("collision a=2 b=9", 0.5, 1e-13, true), hit("collision a=3 b=8", 0.61, 3)};
+                                                hit("collision a=2 b=9", 0.5, 1e-13, true),
+                                                hit("collision a=3 b=8", 0.61, 3)};
   EXPECT_TRUE(compareModelDecisions(classic, ballistic).holds);
   EXPECT_TRUE(compareModelDecisions(ballistic, classic).holds);
   // A trigger fired at another time is not that hit's: the extra trigger is a different decision.
@@ -74,7 +75,8 @@ TEST(ModelsAgreeComparison, AnExtraHitThatChangedNothingButCapturedABallPartsThe
   const PhysicalDecision captured = consequenceAt("captured 1 4", 0.5);
   const std::vector<PhysicalDecision> classic{hit("collision a=3 b=4", 0.5, 0), hit("collision a=0 b=5", 0.6, -3)};
   const std::vector<PhysicalDecision> ballistic{hit("collision a=3 b=4", 0.5, 0), captured,
-                                                hit("collision a=1 b=4", 0.5, 0, true), hit("collision a=0 b=5", 0.6, -3)};
+                                                hit("collision a=1 b=4", 0.5, 0, true),
+                                                hit("collision a=0 b=5", 0.6, -3)};
   EXPECT_TRUE(compareModelDecisions(classic, ballistic).holds);
   EXPECT_TRUE(compareModelDecisions(ballistic, classic).holds);
   // A capture by a hit that changed a velocity is a decision of its own: the other model must take it.
@@ -90,7 +92,8 @@ TEST(ModelsAgreeComparison, AHitClosingWithinTheTolerancesInOneRunOnlyPartsTheRu
   PhysicalDecision capturingHit = hit("collision a=1 b=4", 0.5, 0);
   capturingHit.grazing = true;
   const std::vector<PhysicalDecision> classic{hit("collision a=3 b=4", 0.5, 55), hit("collision a=0 b=5", 0.6, -3)};
-  const std::vector<PhysicalDecision> ballistic{classic[0], consequenceAt("captured 1 4", 0.5), capturingHit, classic[1]};
+  const std::vector<PhysicalDecision> ballistic{classic[0], consequenceAt("captured 1 4", 0.5), capturingHit,
+                                                classic[1]};
   EXPECT_TRUE(compareModelDecisions(classic, ballistic).holds);
   EXPECT_TRUE(compareModelDecisions(ballistic, classic).holds);
   // A ball passing over another at a tangent strikes it in one model only, 1e-10 L lower there
@@ -119,12 +122,14 @@ TEST(ModelsAgreeComparison, ExclusiveDecisionsWithinTheTimeToleranceAreANearTie)
 // captures it at once, so the flipper hit never happens (the two models do the same at mpfr:256:
 // the instant is a tie that every precision breaks by rounding).
 TEST(ModelsAgreeComparison, AHitThatAReorderedNearTieRulesOutIsANearTie) {
-  const std::vector<PhysicalDecision> classic{hit("collision a=2 b=5", 0.5, 1.9), hit("collision a=1 b=5", 0.5 + 8e-16, 0)};
+  const std::vector<PhysicalDecision> classic{hit("collision a=2 b=5", 0.5, 1.9),
+                                              hit("collision a=1 b=5", 0.5 + 8e-16, 0)};
   const std::vector<PhysicalDecision> ballistic{hit("collision a=1 b=5", 0.5 + 2e-16, 0)};
   EXPECT_TRUE(compareModelDecisions(classic, ballistic).holds);
   EXPECT_TRUE(compareModelDecisions(ballistic, classic).holds);
   // The same extra hit, but not where the two runs' order parted: a disagreement.
-  const std::vector<PhysicalDecision> inOrder{hit("collision a=1 b=5", 0.5, 0), hit("collision a=2 b=5", 0.5 + 8e-16, 1.9)};
+  const std::vector<PhysicalDecision> inOrder{hit("collision a=1 b=5", 0.5, 0),
+                                              hit("collision a=2 b=5", 0.5 + 8e-16, 1.9)};
   EXPECT_FALSE(compareModelDecisions(inOrder, ballistic).holds);
   // And a hit missing long after a reordered pair still counts.
   std::vector<PhysicalDecision> later = classic;

@@ -65,8 +65,8 @@ TEST(FuzzRegressions, ABallArcingOntoASquaresTopFromBesideItLandsOnIt) {
   BoardSpec board = test::emptyBoard(1000);
   board.balls.push_back(ballAt("B44", 3.0113470283839713, 16.00693381082062, 55.226450573617034, -24.47813122063693));
   board.gizmos.push_back(gizmoAt(GizmoType::Square, "G20", 4, 16));
-  const InvariantRun run = checkInvariants<double>(ballisticRun(board, 0.05, 0.1),
-                                                   {std::begin(kAllInvariants), std::end(kAllInvariants)});
+  const InvariantRun run =
+      checkInvariants<double>(ballisticRun(board, 0.05, 0.1), {std::begin(kAllInvariants), std::end(kAllInvariants)});
   EXPECT_TRUE(run.violations.empty()) << firstViolation(run);
 }
 
@@ -86,7 +86,8 @@ TEST(FuzzRegressions, ABallReachingAnAbsorberAndAFlipperAtOneInstantIsANearTie) 
                              {13.5, 7.04135623606914, 28.985608412204616, 9.934329998109174},
                              {7.25, 13.75, 0, 0}};
   const char* names[] = {"B5", "B6", "B13", "B14", "B16", "B17", "B18", "B19", "B20", "B21"};
-  for (int i = 0; i < 10; ++i) board.balls.push_back(ballAt(names[i], balls[i][0], balls[i][1], balls[i][2], balls[i][3]));
+  for (int i = 0; i < 10; ++i)
+    board.balls.push_back(ballAt(names[i], balls[i][0], balls[i][1], balls[i][2], balls[i][3]));
   board.gizmos.push_back(gizmoAt(GizmoType::Absorber, "G0", 0, 10, 0, 20, 2));
   board.gizmos.push_back(gizmoAt(GizmoType::LeftFlipper, "G2", 5, 12, 180));
   board.keyConnections.push_back(KeyConnectSpec{32, KeyDirection::Down, "G2", {}});
@@ -109,8 +110,8 @@ TEST(FuzzRegressions, ABallJammedOntoABallThatTheFloorHoldsRestsOnIt) {
   board.balls.push_back(ballAt("B82", 16.5, 19.25));
   board.balls.push_back(ballAt("B93", 16.5, 19.75, -0.002872147958525719, 0));
   board.gizmos.push_back(gizmoAt(GizmoType::Circle, "G28", 16, 18));
-  const InvariantRun run = checkInvariants<double>(ballisticRun(board, 0.05, 0.5),
-                                                   {std::begin(kAllInvariants), std::end(kAllInvariants)});
+  const InvariantRun run =
+      checkInvariants<double>(ballisticRun(board, 0.05, 0.5), {std::begin(kAllInvariants), std::end(kAllInvariants)});
   EXPECT_TRUE(run.violations.empty()) << firstViolation(run);
 }
 

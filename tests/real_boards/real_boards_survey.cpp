@@ -44,9 +44,9 @@ namespace {
 
 struct Outcome {
   bool loaded = false;
-  io::ReadResult read;                   // when loaded
-  std::vector<io::Diagnostic> refusal;   // when refused
-  std::vector<std::string> failures;     // broken expectations
+  io::ReadResult read;                  // when loaded
+  std::vector<io::Diagnostic> refusal;  // when refused
+  std::vector<std::string> failures;    // broken expectations
 };
 
 bool located(const std::vector<io::Diagnostic>& ds) {
@@ -147,8 +147,7 @@ Outcome survey(const fs::path& file, const BoardKind& kind) {
       if (out.loaded && out.read.warnings.empty()) out.failures.push_back("a malformed board loads without a warning");
       if (out.loaded && !located(out.read.warnings)) out.failures.push_back("a warning has no position");
       break;
-    default:
-      break;  // B: whatever happens, without a crash
+    default: break;  // B: whatever happens, without a crash
   }
   return out;
 }
@@ -198,7 +197,8 @@ int main(int argc, char** argv) {
   if (!fs::is_directory(dir) || !fs::exists(dir / "SOURCES.md")) {
     const char* ci = std::getenv("CI");
     const bool inCi = ci != nullptr && std::strcmp(ci, "true") == 0;
-    std::fprintf(stderr, "%s: this test reads the real-board collection, which is not at %s (it lies beside "
+    std::fprintf(stderr,
+                 "%s: this test reads the real-board collection, which is not at %s (it lies beside "
                  "the source tree, as ../shared/boards/real, and does not come with a clone)%s\n",
                  inCi ? "FAIL" : "SKIP", dir.string().c_str(), inCi ? "; CI must have it" : "");
     return inCi ? 1 : kSkipped;
@@ -212,7 +212,8 @@ int main(int argc, char** argv) {
   }
   std::vector<std::string> files;
   for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.is_regular_file() && entry.path().filename() != "SOURCES.md") files.push_back(entry.path().filename().string());
+    if (entry.is_regular_file() && entry.path().filename() != "SOURCES.md")
+      files.push_back(entry.path().filename().string());
   std::sort(files.begin(), files.end());
 
   int failed = 0, checked = 0;
@@ -228,9 +229,11 @@ int main(int argc, char** argv) {
     }
     const Outcome o = survey(dir / files[i], k->second);
     ++checked;
-    for (const std::string& f : o.failures) std::printf("FAIL %s (%c): %s\n", files[i].c_str(), k->second.kind, f.c_str());
+    for (const std::string& f : o.failures)
+      std::printf("FAIL %s (%c): %s\n", files[i].c_str(), k->second.kind, f.c_str());
     failed += o.failures.empty() ? 0 : 1;
-    const std::string group = std::string(1, k->second.kind) + " " + (realboards::isBoardFormat(k->second) ? "text/XML" : "other");
+    const std::string group =
+        std::string(1, k->second.kind) + " " + (realboards::isBoardFormat(k->second) ? "text/XML" : "other");
     auto& t = totals[group];
     ++t[!o.loaded ? 2 : o.read.warnings.empty() ? 0 : 1];
     rows += "| `" + files[i] + "` | " + k->second.kind + " | " + k->second.format + " | " + tableCell(o) + " |\n";

@@ -414,10 +414,10 @@ TEST(Flipper, SwingTakesExactlyOneTwelfthAndReversesAtOnce) {
   auto board = build(s);
   Recorder<double> rec;
   board->setObserver(&rec);
-  board->scheduleInput(0.5, 32, KeyDirection::Down);  // forward: stops at 0.5 + 1/12
-  board->scheduleInput(1.0, 32, KeyDirection::Down);  // back from the end: 1.0 + 1/12
-  board->scheduleInput(2.0, 32, KeyDirection::Down);  // forward again…
-  board->scheduleInput(2.03, 32, KeyDirection::Down); // …reversed after 0.03 s: at rest at 2.06
+  board->scheduleInput(0.5, 32, KeyDirection::Down);   // forward: stops at 0.5 + 1/12
+  board->scheduleInput(1.0, 32, KeyDirection::Down);   // back from the end: 1.0 + 1/12
+  board->scheduleInput(2.0, 32, KeyDirection::Down);   // forward again…
+  board->scheduleInput(2.03, 32, KeyDirection::Down);  // …reversed after 0.03 s: at rest at 2.06
   board->tick(3.0);
   const auto stops = rec.ofKind(EventKind::FlipperStop);
   ASSERT_EQ(stops.size(), 3u);
@@ -539,7 +539,8 @@ TEST(Flipper, BallTheSwingReachesAsItEndsIsStruck) {
       ++predictions;
       if (!c || c->time > stop) ++missed;
     };
-    for (double now = board->now(); now < stop; now = std::nextafter(now + (stop - 0.006) / 2000, 1.0)) predictFrom(now);
+    for (double now = board->now(); now < stop; now = std::nextafter(now + (stop - 0.006) / 2000, 1.0))
+      predictFrom(now);
     for (const double now : {0.082144409666699822, 0.082144409666703888}) predictFrom(now);  // the case's instants
     EXPECT_EQ(missed, 0) << "of " << predictions << " predictions, " << motionModelName(model);
     board->tick(0.2);
@@ -669,7 +670,8 @@ TEST(EventLoop, SimultaneousCollisionsRunInTheDocumentedOrder) {
   // The four balls meet in the centre at t = 4.5 − 0.5/(2·√2)·… : at least two collisions share
   // one instant, and among those the collider is the lower id of its pair.
   int sameInstant = 0;
-  for (std::size_t i = 1; i < runs[0].size(); ++i) sameInstant += std::get<0>(runs[0][i]) == std::get<0>(runs[0][i - 1]);
+  for (std::size_t i = 1; i < runs[0].size(); ++i)
+    sameInstant += std::get<0>(runs[0][i]) == std::get<0>(runs[0][i - 1]);
   EXPECT_GE(sameInstant, 1);
   for (const auto& r : runs[0]) EXPECT_LT(std::get<1>(r), std::get<2>(r));
 }
@@ -682,7 +684,7 @@ TEST(Properties, MovesAreCheckedAgainstTheBoard) {
   s.gizmos.push_back(gizmoAt(GizmoType::Square, "S2", 5, 5));
   auto board = build(s);
   const GizmoId s2 = *board->find("S2");
-  EXPECT_FALSE(board->setProperty(s2, property::kX, PropertyValue(std::int64_t{2})));  // (2,5): free
+  EXPECT_FALSE(board->setProperty(s2, property::kX, PropertyValue(std::int64_t{2})));             // (2,5): free
   EXPECT_TRUE(board->setProperty(s2, property::kY, PropertyValue(std::int64_t{2})).has_value());  // onto S1
   EXPECT_EQ(std::get<std::int64_t>(*board->gizmo(s2).property(property::kY)), 5);
   EXPECT_TRUE(board->setProperty(s2, property::kX, PropertyValue(std::int64_t{20})).has_value());  // off the board

@@ -74,8 +74,7 @@ TEST(Booster, TheCapOnAnUprightFace) {
     ASSERT_EQ(rec.ofKind(EventKind::Collision).size(), 1u) << speed;
     const bool doubled = speed == 2500.0;
     EXPECT_EQ(rec.countRule(ModelRule::Boosted), doubled ? 1 : 0) << speed;
-    EXPECT_EQ(board->ballById(*board->find("B")).velocityAt(board->now()),
-              Vec2<double>(doubled ? -5000.0 : -speed, 0))
+    EXPECT_EQ(board->ballById(*board->find("B")).velocityAt(board->now()), Vec2<double>(doubled ? -5000.0 : -speed, 0))
         << speed;
   }
 }

@@ -40,13 +40,13 @@ TEST(Cradle, OnlyAFeatureWithinReachOnItsFreeSideCounts) {
   auto found = [&](const Vec2<double>& p) {
     return anyFeatureWithin(shape, p, r, reach, [](const Vec2<double>&) { return true; });
   };
-  EXPECT_TRUE(found(Vec2<double>(2, 9.75)));           // touching the edge
-  EXPECT_TRUE(found(Vec2<double>(2, 9.7495)));         // within reach above it
-  EXPECT_FALSE(found(Vec2<double>(2, 9.7485)));        // beyond reach
-  EXPECT_FALSE(found(Vec2<double>(2, 10.25)));         // behind the edge
-  EXPECT_FALSE(found(Vec2<double>(4.1, 9.75)));        // past its end: its vertex's business
-  EXPECT_TRUE(found(Vec2<double>(8, 9.2495)));         // within reach of the circle
-  EXPECT_FALSE(found(Vec2<double>(8, 9.2485)));        // beyond it
+  EXPECT_TRUE(found(Vec2<double>(2, 9.75)));     // touching the edge
+  EXPECT_TRUE(found(Vec2<double>(2, 9.7495)));   // within reach above it
+  EXPECT_FALSE(found(Vec2<double>(2, 9.7485)));  // beyond reach
+  EXPECT_FALSE(found(Vec2<double>(2, 10.25)));   // behind the edge
+  EXPECT_FALSE(found(Vec2<double>(4.1, 9.75)));  // past its end: its vertex's business
+  EXPECT_TRUE(found(Vec2<double>(8, 9.2495)));   // within reach of the circle
+  EXPECT_FALSE(found(Vec2<double>(8, 9.2485)));  // beyond it
   // The direction handed over: the edge's normal, or the offset from the circle's centre.
   Vec2<double> seen;
   anyFeatureWithin(shape, Vec2<double>(8.75, 10), r, reach, [&](const Vec2<double>& d) {

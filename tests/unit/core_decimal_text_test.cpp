@@ -29,9 +29,24 @@ std::string toCharsFixedText(double v) {
 // Doubles of every kind a board holds and more: any bit pattern (finite), cell coordinates in
 // twentieths and thousandths, powers of two and ten, and the extremes.
 std::vector<double> samples() {
-  std::vector<double> out = {0.0, -0.0, 1.0, -1.0, 0.05, 0.1, 0.3, 25.0, 0.025, 1e22, 1e23, 5e-324, 2.2250738585072014e-308,
-                             std::numeric_limits<double>::max(), std::numeric_limits<double>::min(),
-                             std::ldexp(1.0, 60), 123456789012345678.0, 9007199254740993.0};
+  std::vector<double> out = {0.0,
+                             -0.0,
+                             1.0,
+                             -1.0,
+                             0.05,
+                             0.1,
+                             0.3,
+                             25.0,
+                             0.025,
+                             1e22,
+                             1e23,
+                             5e-324,
+                             2.2250738585072014e-308,
+                             std::numeric_limits<double>::max(),
+                             std::numeric_limits<double>::min(),
+                             std::ldexp(1.0, 60),
+                             123456789012345678.0,
+                             9007199254740993.0};
   std::mt19937_64 rng(20261202);
   while (out.size() < 60000) {
     const double v = bitCast<double>(rng());

@@ -42,9 +42,7 @@ Event<double> mostlyTick(std::mt19937_64& rng) {
 }
 
 // An input names no gizmo: its b is the key's direction (EventKind::Input).
-bool involves(const Event<double>& e, GizmoId g) {
-  return e.kind != EventKind::Input && (e.a == g || e.b == g);
-}
+bool involves(const Event<double>& e, GizmoId g) { return e.kind != EventKind::Input && (e.a == g || e.b == g); }
 
 using MakeEvent = Event<double> (*)(std::mt19937_64&);
 

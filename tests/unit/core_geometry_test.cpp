@@ -84,7 +84,7 @@ TEST(Shapes, FlipperLayoutsInAllOrientations) {
     double px, py;
     int rest, end, sign;
   } cases[] = {
-      {GizmoType::LeftFlipper, 0, 0.25, 0.25, 1, 0, -1},  {GizmoType::LeftFlipper, 90, 1.75, 0.25, 2, 1, -1},
+      {GizmoType::LeftFlipper, 0, 0.25, 0.25, 1, 0, -1},   {GizmoType::LeftFlipper, 90, 1.75, 0.25, 2, 1, -1},
       {GizmoType::LeftFlipper, 180, 1.75, 1.75, 3, 2, -1}, {GizmoType::LeftFlipper, 270, 0.25, 1.75, 4, 3, -1},
       {GizmoType::RightFlipper, 0, 1.75, 0.25, 1, 2, 1},   {GizmoType::RightFlipper, 90, 1.75, 1.75, 2, 3, 1},
       {GizmoType::RightFlipper, 180, 0.25, 1.75, 3, 4, 1}, {GizmoType::RightFlipper, 270, 0.25, 0.25, 4, 5, 1},
@@ -141,7 +141,7 @@ TEST(Trajectories, APathRuledOutNeverComesNear) {
   const Trajectory<double> fast{{1, 10}, {5000, 0}, {0, 25}};
   EXPECT_FALSE(pathMayComeWithin(fast, 0.05, Vec2<double>(10, 5), 1.5));
   EXPECT_TRUE(pathMayComeWithin(fast, 0.05, Vec2<double>(10, 9), 1.5));
-  EXPECT_TRUE(pathMayComeWithin(fast, 0.0005, Vec2<double>(2.5, 9), 1.5));   // within reach near the start
+  EXPECT_TRUE(pathMayComeWithin(fast, 0.0005, Vec2<double>(2.5, 9), 1.5));  // within reach near the start
   EXPECT_FALSE(pathMayComeWithin(fast, 0.0005, Vec2<double>(10, 9), 1.5));  // not yet there
 }
 

@@ -100,7 +100,8 @@ std::unique_ptr<GameBoard<Real>> ballsInABox(double seconds) {
   s.gizmos.push_back(gizmoAt(GizmoType::Triangle, "TL", 5, 19, 0));
   s.gizmos.push_back(gizmoAt(GizmoType::Triangle, "TR", 7, 19, 90));
   for (int i = 0; i < 9; ++i)
-    s.balls.push_back(ballAt("B" + std::to_string(i), 5.3 + 0.55 * (i % 4), 14.4 + 0.6 * (i / 4), 0.7 - 0.3 * (i % 4), 0));
+    s.balls.push_back(
+        ballAt("B" + std::to_string(i), 5.3 + 0.55 * (i % 4), 14.4 + 0.6 * (i / 4), 0.7 - 0.3 * (i % 4), 0));
   auto board = build<Real>(s, MotionModel::Ballistic);
   board->tick(Real(seconds));
   return board;
@@ -126,7 +127,8 @@ void expectAPileAtRest(GameBoard<Real>& board) {
     }
     // Nothing hangs in the air: a ball lies low in the box (on its floor or a triangle's slope),
     // or something at rest lies under it.
-    EXPECT_TRUE(p[i].y > 18.5 || below > 0) << "ball " << i << " at (" << p[i].x << ", " << p[i].y << ") rests on nothing";
+    EXPECT_TRUE(p[i].y > 18.5 || below > 0)
+        << "ball " << i << " at (" << p[i].x << ", " << p[i].y << ") rests on nothing";
     EXPECT_GE(p[i].x, 5.25 - 1e-9);
     EXPECT_LE(p[i].x, 7.75 + 1e-9);
   }
@@ -181,7 +183,8 @@ TEST(Piles, RowsThatFillABoxComeToRest) {
       s.gizmos.push_back(gizmoAt(GizmoType::Square, "R" + std::to_string(y), 7, y));
     }
     for (int i = 0; i < 9; ++i)
-      s.balls.push_back(ballAt("B" + std::to_string(i), 5.35 + 0.65 * (i % 3), 14.4 + 0.6 * (i / 3), 0.5 - 0.3 * (i % 3), 0));
+      s.balls.push_back(
+          ballAt("B" + std::to_string(i), 5.35 + 0.65 * (i % 3), 14.4 + 0.6 * (i / 3), 0.5 - 0.3 * (i % 3), 0));
     PhysicsParams<double> p;
     p.model = model;
     const auto w = watch(s, p, 20.0);

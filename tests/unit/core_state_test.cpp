@@ -42,8 +42,8 @@ void resumesIdentically(std::uint64_t seed, MotionModel model) {
                                                original.decisions.end());
     ASSERT_EQ(resumed.decisions.size(), expected.size()) << "seed " << seed << " resumed at tick " << tick;
     for (std::size_t i = 0; i < expected.size(); ++i)
-      ASSERT_EQ(resumed.decisions[i], expected[i]) << "seed " << seed << " resumed at tick " << tick
-                                                   << ", decision " << i;
+      ASSERT_EQ(resumed.decisions[i], expected[i])
+          << "seed " << seed << " resumed at tick " << tick << ", decision " << i;
   }
 }
 
@@ -85,10 +85,8 @@ TEST(SavedState, ARunCutAtATicksEndIsAPrefixOfTheWholeRun) {
     for (double t : {0.0, 0.05, 3.3, 3.3000000000000003, 7.9}) {
       const RunRequest cut = runThroughTickAt(whole, t);
       EXPECT_GE(cut.duration, t);
-      if (t > 0)
-        EXPECT_LT(cut.duration - whole.maxTick, t) << "not the tick that holds " << t;
-      else
-        EXPECT_EQ(cut.duration, whole.maxTick) << "the first tick holds the events at 0";
+      if (t > 0) EXPECT_LT(cut.duration - whole.maxTick, t) << "not the tick that holds " << t;
+      else EXPECT_EQ(cut.duration, whole.maxTick) << "the first tick holds the events at 0";
       test::DecisionTrace<double> part;
       simulate<double>(cut, &part);
       ASSERT_LT(part.decisions.size(), all.decisions.size()) << "t = " << t;

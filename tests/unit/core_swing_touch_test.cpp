@@ -63,7 +63,8 @@ void expectEachTouchMetAtOnce(const AbstractGizmo<double>& gizmo, const Swinging
       for (int dy = -3; dy <= 3; ++dy) {
         const Vec2<double> p(touch.x + dx * kUlpAt10, touch.y + dy * kUlpAt10);
         ball.setState(board.now(), p, {0, 0}, board.params());
-        const std::optional<Contact<double>> hit = gizmo.timeUntilCollision(ball, board.now(), board.now() + 1, board.params());
+        const std::optional<Contact<double>> hit =
+            gizmo.timeUntilCollision(ball, board.now(), board.now() + 1, board.params());
         std::ostringstream at;
         at.precision(17);
         at << where << ", touch " << touchIndex << ", t " << board.now() << ", ball at " << p.x << ", " << p.y;

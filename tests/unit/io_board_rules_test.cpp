@@ -52,8 +52,9 @@ void expectWrittenBackLoadsStrictly(const ReadResult& r) {
 }
 
 TEST(BoardRules, ACommandNobodyHereKnowsIsLeftOutByNameWithACount) {
-  const ReadResult r = read("Square S 1 1\nTeleporterConnect S T\nABSNOTCONNECTED\nABSNOTCONNECTED\nWidget W 3 3\n"
-                            "Connect W S\nConnect S S\n");
+  const ReadResult r = read(
+      "Square S 1 1\nTeleporterConnect S T\nABSNOTCONNECTED\nABSNOTCONNECTED\nWidget W 3 3\n"
+      "Connect W S\nConnect S S\n");
   ASSERT_EQ(r.board.gizmos.size(), 1u);
   ASSERT_EQ(r.board.connections.size(), 1u);  // Connect W S goes with W
   EXPECT_EQ(warningWith(r, "'TeleporterConnect'").substr(0, 30), "b.txt:2:1: warning: 'Teleporte");
@@ -68,8 +69,9 @@ TEST(BoardRules, ACommandNobodyHereKnowsIsLeftOutByNameWithACount) {
 TEST(BoardRules, AFileWithNoLineOfTheFormatIsNoBoard) {
   const std::vector<std::string> e = errorsOf([] { read("Hello there\nthis is a note\n"); });
   ASSERT_EQ(e.size(), 1u);
-  EXPECT_EQ(e[0], "b.txt:1:1: error: no line of this file is a command of the Gizmoball format (the first line's word "
-                  "is 'Hello'); it does not look like a Gizmoball board");
+  EXPECT_EQ(e[0],
+            "b.txt:1:1: error: no line of this file is a command of the Gizmoball format (the first line's word "
+            "is 'Hello'); it does not look like a Gizmoball board");
 }
 
 TEST(BoardRules, ValuesAfterWhatPlacesAGizmoOrABallAreIgnored) {
@@ -94,7 +96,8 @@ TEST(BoardRules, AnAddedGizmoShortOfValuesIsLeftOutWithWhatItNames) {
   EXPECT_EQ(r.board.balls.size(), 1u);
   const std::string portal = warningWith(r, "Portal takes 5 values");
   EXPECT_EQ(portal.substr(0, 11), "b.txt:2:1: ");
-  EXPECT_NE(portal.find("another program's portal, left out, and so are the commands that name 'P'"), std::string::npos);
+  EXPECT_NE(portal.find("another program's portal, left out, and so are the commands that name 'P'"),
+            std::string::npos);
   EXPECT_NE(warningWith(r, "names 'P'").find("(and 1 more like this)"), std::string::npos);
   expectWrittenBackLoadsStrictly(r);
   // A command of the format short of its values is malformed, as its programs' own error tests say.
@@ -106,8 +109,8 @@ TEST(BoardRules, AnAddedGizmoShortOfValuesIsLeftOutWithWhatItNames) {
 
 TEST(BoardRules, KeysAreReadByTheirNamesInEachSpelling) {
   const std::pair<const char*, int> named[] = {
-      {"VK_SPACE", 32}, {"ArrowLeft", 37}, {"KeyA", 65},    {"DIGIT1", 49}, {"Digit7", 55},     {"BACK_SPACE", 8},
-      {"ShiftLeft", 16}, {"ControlRight", 17}, {"NUMPAD7", 103}, {"F12", 123}, {"PageDown", 34}, {"vk_enter", 10},
+      {"VK_SPACE", 32},  {"ArrowLeft", 37},    {"KeyA", 65},     {"DIGIT1", 49}, {"Digit7", 55},   {"BACK_SPACE", 8},
+      {"ShiftLeft", 16}, {"ControlRight", 17}, {"NUMPAD7", 103}, {"F12", 123},   {"PageDown", 34}, {"vk_enter", 10},
       {"x", 88},
   };
   for (const auto& [name, code] : named) {
@@ -165,8 +168,9 @@ TEST(BoardRules, ABallOffTheBoardInPixelsIsConverted) {
 // A file whose gizmos are placed in pixels: every corner a whole cell of 25 pixels, some gizmo far
 // beyond the board. Every gizmo and ball is divided by 25 (20 leaves 250 at 12.5 cells).
 TEST(BoardRules, AFileInPixelsIsConverted) {
-  const ReadResult r = read("Square S 250 250\nCircle C 100 0\nTriangle T 450 450\nLeftFlipper F 200 200\n"
-                            "Absorber A 100 400 400 410\nBall B 25 25 200 200\n");
+  const ReadResult r = read(
+      "Square S 250 250\nCircle C 100 0\nTriangle T 450 450\nLeftFlipper F 200 200\n"
+      "Absorber A 100 400 400 410\nBall B 25 25 200 200\n");
   ASSERT_EQ(r.board.gizmos.size(), 5u);
   EXPECT_EQ(r.board.gizmos[0].x, 10);
   EXPECT_EQ(r.board.gizmos[0].y, 10);

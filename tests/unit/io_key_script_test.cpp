@@ -41,9 +41,11 @@ TEST(KeyScript, KeyCodeLimits) {
   EXPECT_EQ(in[1].key, 65535);
   EXPECT_EQ(scriptErrors("0 down 65536"),
             (std::vector<std::string>{"k.keys:1:8: error: key code 65536 is outside 0..65535"}));
-  EXPECT_EQ(scriptErrors("0 down -1"), (std::vector<std::string>{"k.keys:1:8: error: key code -1 is outside 0..65535"}));
-  EXPECT_EQ(scriptErrors("0 down 32.0"),
-            (std::vector<std::string>{"k.keys:1:8: error: the key code must be written as a whole number, not '32.0'"}));
+  EXPECT_EQ(scriptErrors("0 down -1"),
+            (std::vector<std::string>{"k.keys:1:8: error: key code -1 is outside 0..65535"}));
+  EXPECT_EQ(
+      scriptErrors("0 down 32.0"),
+      (std::vector<std::string>{"k.keys:1:8: error: the key code must be written as a whole number, not '32.0'"}));
   EXPECT_EQ(scriptErrors("0 down space"),
             (std::vector<std::string>{"k.keys:1:8: error: the key code must be a number, not 'space'"}));
 }
@@ -56,8 +58,10 @@ TEST(KeyScript, Times) {
                 "k.keys:3:1: error: the time '0.5' is earlier than the time 1 on line 1; times must not decrease"}));
   EXPECT_EQ(scriptErrors("inf down 32"),
             (std::vector<std::string>{"k.keys:1:1: error: the time must be a finite number, not 'inf'"}));
-  EXPECT_EQ(scriptErrors("1s down 32"), (std::vector<std::string>{"k.keys:1:1: error: the time must be a number, not '1s'"}));
-  EXPECT_EQ(scriptErrors("1e400 down 32"), (std::vector<std::string>{"k.keys:1:1: error: the time '1e400' is out of range"}));
+  EXPECT_EQ(scriptErrors("1s down 32"),
+            (std::vector<std::string>{"k.keys:1:1: error: the time must be a number, not '1s'"}));
+  EXPECT_EQ(scriptErrors("1e400 down 32"),
+            (std::vector<std::string>{"k.keys:1:1: error: the time '1e400' is out of range"}));
 }
 
 TEST(KeyScript, Shape) {

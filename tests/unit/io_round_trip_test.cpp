@@ -134,13 +134,21 @@ TEST(BoardWriter, AwkwardDoublesSurviveExactly) {
   b.gravity = 1.0 / 3;
   b.mu = 0.1 + 0.2;
   b.mu2 = 1e-5 / 3;
-  const double fractions[] = {1.0 / 3, 0.1, 0.2, 0.1 + 0.2, std::nextafter(0.5, 1.0), std::nextafter(0.5, 0.0),
-                              2.0 / 7, 1e-9, 0.123456789012345678, 0.999};
-  const double speeds[] = {-0.0, 5e-324, 1e-310, 1e5 / 3, -999999.9999999999, 2.2250738585072014e-308,
-                           0.1, -7.0 / 3, 1e6, -1e6};
+  const double fractions[] = {1.0 / 3,
+                              0.1,
+                              0.2,
+                              0.1 + 0.2,
+                              std::nextafter(0.5, 1.0),
+                              std::nextafter(0.5, 0.0),
+                              2.0 / 7,
+                              1e-9,
+                              0.123456789012345678,
+                              0.999};
+  const double speeds[] = {-0.0, 5e-324,   1e-310, 1e5 / 3, -999999.9999999999, 2.2250738585072014e-308,
+                           0.1,  -7.0 / 3, 1e6,    -1e6};
   for (int i = 0; i < 10; ++i)
-    b.balls.push_back(BallSpec{"B" + std::to_string(i), 1 + 1.5 * i + fractions[i], 10 + fractions[i], speeds[i],
-                               speeds[9 - i], {}});
+    b.balls.push_back(
+        BallSpec{"B" + std::to_string(i), 1 + 1.5 * i + fractions[i], 10 + fractions[i], speeds[i], speeds[9 - i], {}});
   roundTrip(b);
   const BoardSpec back = readTextBoard(writeTextBoard(b), "t").board;
   EXPECT_TRUE(std::signbit(back.balls[0].vx));  // −0 stays −0
@@ -179,15 +187,18 @@ BoardSpec generatedBoard() {
   BoardSpec b;
   for (int y = 0; y < 20; ++y)
     for (int x = 0; x < 20; ++x)
-      b.gizmos.push_back(GizmoSpec{GizmoType::Triangle, "T" + std::to_string(x) + "_" + std::to_string(y), x, y, 0, 1, 1, {}});
+      b.gizmos.push_back(
+          GizmoSpec{GizmoType::Triangle, "T" + std::to_string(x) + "_" + std::to_string(y), x, y, 0, 1, 1, {}});
   for (int i = 0; i < 100; ++i) {
     const int cell = (i * 97) % 400;  // 97 and 400 are coprime: 100 distinct cells
     const int x = cell % 20, y = cell / 20;
     b.balls.push_back(BallSpec{"B" + std::to_string(i), x + 0.75, y + 0.75, i * 0.5 - 25, 3, {}});
   }
-  for (int i = 0; i < 400; i += 3) b.connections.push_back(ConnectSpec{b.gizmos[i].name, b.gizmos[(i + 1) % 400].name, {}});
+  for (int i = 0; i < 400; i += 3)
+    b.connections.push_back(ConnectSpec{b.gizmos[i].name, b.gizmos[(i + 1) % 400].name, {}});
   for (int k = 0; k < 10; ++k)
-    b.keyConnections.push_back(KeyConnectSpec{65 + k, k % 2 ? KeyDirection::Up : KeyDirection::Down, b.gizmos[k].name, {}});
+    b.keyConnections.push_back(
+        KeyConnectSpec{65 + k, k % 2 ? KeyDirection::Up : KeyDirection::Down, b.gizmos[k].name, {}});
   return b;
 }
 
@@ -218,8 +229,9 @@ TEST(GeneratedBoard, OneUlpCloserIsAnOverlap) {
   EXPECT_EQ(r.board.balls.size(), b.balls.size() - 1);
   const auto e = errorsOf([&] { refuseLeniency(r); });
   ASSERT_EQ(e.size(), 1u);
-  EXPECT_EQ(e[0], "g.txt:403:1: error: ball 'B0' at (0.7500000000000001, 0.75) overlaps triangle 'T1_0' from line 4; "
-                  "the ball is left out (refused: --strict reads a board only as written)");
+  EXPECT_EQ(e[0],
+            "g.txt:403:1: error: ball 'B0' at (0.7500000000000001, 0.75) overlaps triangle 'T1_0' from line 4; "
+            "the ball is left out (refused: --strict reads a board only as written)");
 }
 
 }  // namespace

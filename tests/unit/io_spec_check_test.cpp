@@ -54,11 +54,12 @@ TEST(CheckBoardSpec, Balls) {
   b.balls.push_back(BallSpec{"V", 5, 5, std::numeric_limits<double>::infinity(), 0, {}});
   b.balls.push_back(BallSpec{"F", 10, 10, 0, -2e6, {}});
   b.balls.push_back(ball("O", 5, 0.2));
-  EXPECT_EQ(messages(b),
-            (std::vector<std::string>{
-                "ball 'N' has a position that is not a finite number", "ball 'V' has a velocity that is not a finite number",
-                "ball 'F' is too fast: its velocity (0, -2000000) L/s exceeds 1000000 L/s in x or y",
-                "ball 'O' at (5, 0.2) is not inside the board: its centre must be at least 0.25 L from every wall"}));
+  EXPECT_EQ(
+      messages(b),
+      (std::vector<std::string>{
+          "ball 'N' has a position that is not a finite number", "ball 'V' has a velocity that is not a finite number",
+          "ball 'F' is too fast: its velocity (0, -2000000) L/s exceeds 1000000 L/s in x or y",
+          "ball 'O' at (5, 0.2) is not inside the board: its centre must be at least 0.25 L from every wall"}));
   // Exactly touching the walls is inside.
   b.balls = {ball("A", 0.25, 0.25), ball("B", 19.75, 19.75)};
   EXPECT_TRUE(checkBoardSpec(b).empty());
@@ -71,12 +72,12 @@ TEST(CheckBoardSpec, GizmoShapes) {
   b.gizmos.push_back(GizmoSpec{GizmoType::Square, "S", 3, 3, 0, 2, 1, {}});
   b.gizmos.push_back(GizmoSpec{GizmoType::Absorber, "Z", 5, 5, 0, 3, 0, {}});
   b.gizmos.push_back(GizmoSpec{GizmoType::LeftFlipper, "L", 8, 8, 0, 1, 1, {}});
-  EXPECT_EQ(messages(b), (std::vector<std::string>{
-                             "triangle 'T' has orientation 45; it must be 0, 90, 180 or 270",
-                             "absorber 'A' has orientation 90, but an absorber cannot be rotated",
-                             "square 'S' is 2 x 1 L, but every square is 1 x 1 L",
-                             "absorber 'Z' is 3 x 0 L; its width and height must each be at least 1",
-                             "left flipper 'L' is 1 x 1 L, but every left flipper is 2 x 2 L"}));
+  EXPECT_EQ(messages(b),
+            (std::vector<std::string>{"triangle 'T' has orientation 45; it must be 0, 90, 180 or 270",
+                                      "absorber 'A' has orientation 90, but an absorber cannot be rotated",
+                                      "square 'S' is 2 x 1 L, but every square is 1 x 1 L",
+                                      "absorber 'Z' is 3 x 0 L; its width and height must each be at least 1",
+                                      "left flipper 'L' is 1 x 1 L, but every left flipper is 2 x 2 L"}));
 }
 
 TEST(CheckBoardSpec, NamesAreUniqueAcrossBallsAndGizmos) {
@@ -85,10 +86,10 @@ TEST(CheckBoardSpec, NamesAreUniqueAcrossBallsAndGizmos) {
   b.gizmos.push_back(square("X", 1, 1));
   b.gizmos.push_back(square("OuterWalls", 3, 3));
   b.balls.push_back(ball("OuterWalls", 10, 10));
-  EXPECT_EQ(messages(b),
-            (std::vector<std::string>{"the name 'OuterWalls' is reserved for the outer walls; a ball cannot use it",
-                                      "square 'X' has the same name as the ball; names must be unique",
-                                      "the name 'OuterWalls' is reserved for the outer walls; a square cannot use it"}));
+  EXPECT_EQ(messages(b), (std::vector<std::string>{
+                             "the name 'OuterWalls' is reserved for the outer walls; a ball cannot use it",
+                             "square 'X' has the same name as the ball; names must be unique",
+                             "the name 'OuterWalls' is reserved for the outer walls; a square cannot use it"}));
 }
 
 TEST(CheckBoardSpec, MovingAGizmoOntoAnother) {
@@ -125,17 +126,19 @@ TEST(CheckBoardSpec, Connections) {
   b.gizmos.push_back(square("A", 1, 1));
   b.gizmos.push_back(square("B", 3, 3));
   b.balls.push_back(ball("Ball", 10, 10));
-  b.connections = {{"A", "B", {}},          {"OuterWalls", "A", {}}, {"A", "B", {}},     {"Ball", "A", {}},
-                   {"A", "Ball", {}},       {"A", "OuterWalls", {}}, {"A", "nope", {}}, {"outerWalls", "A", {}}};
-  b.keyConnections = {{32, KeyDirection::Down, "A", {}}, {32, KeyDirection::Up, "A", {}}, {32, KeyDirection::Down, "A", {}}};
-  EXPECT_EQ(messages(b), (std::vector<std::string>{
-                             "the connection from 'A' to 'B' is listed twice",
-                             "connection source 'Ball' is a ball; a ball triggers nothing",
-                             "connection target 'Ball' is a ball; a ball has no action",
-                             "connection target cannot be the outer walls: they have no action",
-                             "connection target 'nope' is not a gizmo on this board",
-                             "connection source 'outerWalls' is not a gizmo on this board (the outer walls are named OuterWalls)",
-                             "the key connection from key 32 down to 'A' is listed twice"}));
+  b.connections = {{"A", "B", {}},    {"OuterWalls", "A", {}}, {"A", "B", {}},    {"Ball", "A", {}},
+                   {"A", "Ball", {}}, {"A", "OuterWalls", {}}, {"A", "nope", {}}, {"outerWalls", "A", {}}};
+  b.keyConnections = {
+      {32, KeyDirection::Down, "A", {}}, {32, KeyDirection::Up, "A", {}}, {32, KeyDirection::Down, "A", {}}};
+  EXPECT_EQ(messages(b),
+            (std::vector<std::string>{
+                "the connection from 'A' to 'B' is listed twice",
+                "connection source 'Ball' is a ball; a ball triggers nothing",
+                "connection target 'Ball' is a ball; a ball has no action",
+                "connection target cannot be the outer walls: they have no action",
+                "connection target 'nope' is not a gizmo on this board",
+                "connection source 'outerWalls' is not a gizmo on this board (the outer walls are named OuterWalls)",
+                "the key connection from key 32 down to 'A' is listed twice"}));
 }
 
 TEST(CheckBoardSpec, CapturedBalls) {

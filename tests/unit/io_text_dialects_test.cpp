@@ -67,8 +67,9 @@ TEST(TextDialects, KeywordsInAnotherCase) {
   EXPECT_EQ(r.board.gizmos.size(), 1u);
   ASSERT_EQ(r.board.keyConnections.size(), 1u);
   EXPECT_EQ(r.board.keyConnections[0].direction, KeyDirection::Down);
-  EXPECT_TRUE(warned(r, "b.txt:1:1: warning: 'square' is written 'Square' in the standard format; keywords are read "
-                        "without regard to case (and 2 more like this)"));
+  EXPECT_TRUE(warned(r,
+                     "b.txt:1:1: warning: 'square' is written 'Square' in the standard format; keywords are read "
+                     "without regard to case (and 2 more like this)"));
 }
 
 TEST(TextDialects, AbsorberWithoutItsLowerRightCorner) {
@@ -143,8 +144,9 @@ TEST(TextDialects, DirectionOnDown) {
   ASSERT_EQ(r.board.keyConnections.size(), 2u);
   EXPECT_EQ(r.board.keyConnections[0].direction, KeyDirection::Down);
   EXPECT_EQ(r.board.keyConnections[1].direction, KeyDirection::Up);
-  EXPECT_TRUE(warned(r, "b.txt:2:19: warning: 'ondown' is read as two connections, down and up: "
-                        "ConfuddledPenguin/Gizmoball's reader"));
+  EXPECT_TRUE(warned(r,
+                     "b.txt:2:19: warning: 'ondown' is read as two connections, down and up: "
+                     "ConfuddledPenguin/Gizmoball's reader"));
 }
 
 TEST(TextDialects, DirectionChange) {
@@ -158,8 +160,9 @@ TEST(TextDialects, ConnectionsBeforeGizmos) {
   ASSERT_EQ(r.board.connections.size(), 1u);
   EXPECT_EQ(r.board.connections[0].source, "S");
   EXPECT_EQ(r.board.keyConnections.size(), 1u);
-  EXPECT_TRUE(warned(r, "b.txt:1:1: warning: this connection names a gizmo that is created further down; it is made "
-                        "at the end of the file (and 1 more like this)"));
+  EXPECT_TRUE(warned(r,
+                     "b.txt:1:1: warning: this connection names a gizmo that is created further down; it is made "
+                     "at the end of the file (and 1 more like this)"));
 }
 
 }  // namespace

@@ -35,12 +35,12 @@ TEST(TextReaderLeniency, CrCrLfLineEnds) {
             "b.txt:1:13: warning: line ending CR CR LF (a CR LF file saved again through a CR LF conversion) read as "
             "a plain line end (and 1 more like this)");
   // A CR inside a line is still refused.
-  EXPECT_EQ(firstError("Square S 1 1\rSquare T 2 2\n"),
-            "b.txt:1:13: error: unexpected control character (byte 0x0D)");
+  EXPECT_EQ(firstError("Square S 1 1\rSquare T 2 2\n"), "b.txt:1:13: error: unexpected control character (byte 0x0D)");
 }
 
 TEST(TextReaderLeniency, NamesOutsideTheStandardAreRenamed) {
-  const ReadResult r = read("Ball Ball(126,121) 6.3 6.05 -3 0\nSquare 054ba281-d896 1 1\nConnect 054ba281-d896 054ba281-d896\n");
+  const ReadResult r =
+      read("Ball Ball(126,121) 6.3 6.05 -3 0\nSquare 054ba281-d896 1 1\nConnect 054ba281-d896 054ba281-d896\n");
   EXPECT_EQ(r.board.balls[0].name, "Ball_126_121_");
   EXPECT_EQ(r.board.gizmos[0].name, "054ba281_d896");
   ASSERT_EQ(r.board.connections.size(), 1u);
@@ -54,8 +54,9 @@ TEST(TextReaderLeniency, NamesOutsideTheStandardAreRenamed) {
 }
 
 TEST(TextReaderLeniency, NamesGivenTwiceAreNumbered) {
-  const ReadResult r = read("Ball B 2 2 0 0\nBall B 4 4 0 0\nBall B 6 6 0 0\nSquare S 10 10\nConnect S S\nSquare S 12 12\n"
-                            "Connect S S\n");
+  const ReadResult r = read(
+      "Ball B 2 2 0 0\nBall B 4 4 0 0\nBall B 6 6 0 0\nSquare S 10 10\nConnect S S\nSquare S 12 12\n"
+      "Connect S S\n");
   ASSERT_EQ(r.board.balls.size(), 3u);
   EXPECT_EQ(r.board.balls[1].name, "B_2");
   EXPECT_EQ(r.board.balls[2].name, "B_3");
@@ -70,25 +71,30 @@ TEST(TextReaderLeniency, NamesGivenTwiceAreNumbered) {
 }
 
 TEST(TextReaderLeniency, AdditionsAreLeftOutByName) {
-  const ReadResult r = read("Square S 1 1\nDeathSquare K 5 5\nGate P 7 7\nConnect S K\nConnect K S\nKeyConnect key 32 down P\n"
-                            "Rotate P\ncolor S #ff0000\nMouseConnect left-click press S\n");
+  const ReadResult r = read(
+      "Square S 1 1\nDeathSquare K 5 5\nGate P 7 7\nConnect S K\nConnect K S\nKeyConnect key 32 down P\n"
+      "Rotate P\ncolor S #ff0000\nMouseConnect left-click press S\n");
   EXPECT_EQ(r.board.gizmos.size(), 1u);
   EXPECT_TRUE(r.board.connections.empty());
   EXPECT_TRUE(r.board.keyConnections.empty());
   const std::vector<std::string> w = formatted(r.warnings);
   ASSERT_EQ(w.size(), 5u);
-  EXPECT_EQ(w[0], "b.txt:2:1: warning: 'DeathSquare' (a square that stops the ball, from d-g-n/CS308-GizmoBall) is "
-                  "not a gizmo this simulator knows; it is left out, and so are the commands that name 'K'");
-  EXPECT_EQ(w[2], "b.txt:4:1: warning: 'Connect' names 'K', the 'DeathSquare' that is left out; the command is ignored (and 3 "
-                  "more like this)");
-  EXPECT_EQ(w[3], "b.txt:8:1: warning: 'color' lines (a colour, from NiklavsM/Gizmoball, JedBurrows/CS308-GIzmoball) do "
-                  "not change how the board plays; ignored");
-  EXPECT_EQ(w[4], "b.txt:9:1: warning: 'MouseConnect' (a mouse-button connection, from MIT 6.170 staff examples "
-                  "(dwctsai/mit-6.170-gizmoball-3d)) is an input this simulator does not have; the line is ignored");
+  EXPECT_EQ(w[0],
+            "b.txt:2:1: warning: 'DeathSquare' (a square that stops the ball, from d-g-n/CS308-GizmoBall) is "
+            "not a gizmo this simulator knows; it is left out, and so are the commands that name 'K'");
+  EXPECT_EQ(
+      w[2],
+      "b.txt:4:1: warning: 'Connect' names 'K', the 'DeathSquare' that is left out; the command is ignored (and 3 "
+      "more like this)");
+  EXPECT_EQ(w[3],
+            "b.txt:8:1: warning: 'color' lines (a colour, from NiklavsM/Gizmoball, JedBurrows/CS308-GIzmoball) do "
+            "not change how the board plays; ignored");
+  EXPECT_EQ(w[4],
+            "b.txt:9:1: warning: 'MouseConnect' (a mouse-button connection, from MIT 6.170 staff examples "
+            "(dwctsai/mit-6.170-gizmoball-3d)) is an input this simulator does not have; the line is ignored");
   // A word that no program gives a meaning is left out too, by name (io_board_rules_test.cpp); a
   // file of nothing else is no board.
-  EXPECT_EQ(firstError("Kircle C 3 4\n").substr(0, 57),
-            "b.txt:1:1: error: no line of this file is a command of th");
+  EXPECT_EQ(firstError("Kircle C 3 4\n").substr(0, 57), "b.txt:1:1: error: no line of this file is a command of th");
 }
 
 TEST(TextReaderLeniency, OndownAndChangeAreDownAndUp) {
@@ -104,8 +110,9 @@ TEST(TextReaderLeniency, OndownAndChangeAreDownAndUp) {
 }
 
 TEST(TextReaderLeniency, KeyNames) {
-  const ReadResult r = read("Absorber A 0 19 20 20\nKeyConnect key Space down A\nKeyConnect key Q up A\n"
-                            "KeyConnect key Delete down A\nKeyConnect key F1 down A\n");
+  const ReadResult r = read(
+      "Absorber A 0 19 20 20\nKeyConnect key Space down A\nKeyConnect key Q up A\n"
+      "KeyConnect key Delete down A\nKeyConnect key F1 down A\n");
   ASSERT_EQ(r.board.keyConnections.size(), 4u);
   EXPECT_EQ(r.board.keyConnections[0].key, 32);
   EXPECT_EQ(r.board.keyConnections[1].key, 81);
@@ -128,7 +135,8 @@ TEST(TextReaderLeniency, FractionalCellsAndTrailingWords) {
   EXPECT_EQ(r.board.balls[0].vx, 5.0);
   const std::vector<std::string> w = formatted(r.warnings);
   ASSERT_EQ(w.size(), 2u);
-  EXPECT_EQ(w[0], "b.txt:1:17: warning: '12.5' is not a whole number; the gizmo is placed in the cell it starts in, 12");
+  EXPECT_EQ(w[0],
+            "b.txt:1:17: warning: '12.5' is not a whole number; the gizmo is placed in the cell it starts in, 12");
   EXPECT_EQ(w[1].substr(0, 60), "b.txt:2:21: warning: the word 'false' after LeftFlipper NAME");
   // A number after what places a gizmo is ignored too, with the general warning
   // (io_board_rules_test.cpp); two extra words after a Connect are an error.
@@ -142,16 +150,18 @@ TEST(TextReaderLeniency, ConnectionsToUnknownOrLaterNames) {
   EXPECT_TRUE(r.board.keyConnections.empty());
   const std::vector<std::string> w = formatted(r.warnings);
   ASSERT_EQ(w.size(), 2u);
-  EXPECT_EQ(w[0], "b.txt:1:1: warning: this connection names a gizmo that is created further down; it is made at the "
-                  "end of the file");
+  EXPECT_EQ(w[0],
+            "b.txt:1:1: warning: this connection names a gizmo that is created further down; it is made at the "
+            "end of the file");
   EXPECT_EQ(w[1], "b.txt:4:1: warning: there is no gizmo named 'LF92' in the file; the connection is ignored");
 }
 
 TEST(TextReaderLeniency, PlacementsOtherProgramsAccept) {
   // A ball on the wall is moved inside; one inside an absorber is captured; the later of two
   // overlapping things is left out, and a gizmo's connections go with it.
-  const ReadResult r = read("Ball B0 0 0 1 1\nAbsorber A 0 19 20 20\nBall B1 19 19 20 20\nSquare S 5 5\n"
-                            "Circle C 5 5\nConnect S C\nBall D 8 8 0 0\nBall E 8 8 0 0\n");
+  const ReadResult r = read(
+      "Ball B0 0 0 1 1\nAbsorber A 0 19 20 20\nBall B1 19 19 20 20\nSquare S 5 5\n"
+      "Circle C 5 5\nConnect S C\nBall D 8 8 0 0\nBall E 8 8 0 0\n");
   ASSERT_EQ(r.board.balls.size(), 3u);
   EXPECT_EQ(r.board.balls[0].x, 0.25);
   EXPECT_EQ(r.board.balls[0].y, 0.25);
@@ -166,9 +176,10 @@ TEST(TextReaderLeniency, PlacementsOtherProgramsAccept) {
 }
 
 TEST(TextReaderLeniency, WrittenBackItLoadsStrictlyAndRunsTheSameDecisions) {
-  const std::string file = "Ball Ball(1,2) 5 5 3 -2\r\nBall Ball(1,2) 9 9 -4 1\r\nSquare S-1 2.5 12\r\n"
-                           "LeftFlipper F 10 15 false\r\nKeyConnect Key Space ondown F\r\nSink K 1 1\r\nConnect K F\r\n"
-                           "Absorber A 0 19 20 20\r\nConnect S-1 A\r\nBall B 10 19.2 0 5\r\n";
+  const std::string file =
+      "Ball Ball(1,2) 5 5 3 -2\r\nBall Ball(1,2) 9 9 -4 1\r\nSquare S-1 2.5 12\r\n"
+      "LeftFlipper F 10 15 false\r\nKeyConnect Key Space ondown F\r\nSink K 1 1\r\nConnect K F\r\n"
+      "Absorber A 0 19 20 20\r\nConnect S-1 A\r\nBall B 10 19.2 0 5\r\n";
   const ReadResult lenient = read(file);
   ASSERT_FALSE(lenient.warnings.empty());
   const ReadResult again = readTextBoard(writeTextBoard(lenient.board), "written.txt");
@@ -191,27 +202,33 @@ TEST(TextReaderLeniency, WrittenBackItLoadsStrictlyAndRunsTheSameDecisions) {
 TEST(TextReaderLeniency, StrictRefusesEachLeniencyAtItsPlace) {
   const std::vector<std::string> e = strict("Square S 1 1\nConnect S S\nConnect S S\n");
   ASSERT_EQ(e.size(), 1u);
-  EXPECT_EQ(e[0], "b.txt:3:1: error: this connection repeats the one on line 2; the repetition is ignored (refused: "
-                  "--strict reads a board only as written)");
+  EXPECT_EQ(e[0],
+            "b.txt:3:1: error: this connection repeats the one on line 2; the repetition is ignored (refused: "
+            "--strict reads a board only as written)");
   EXPECT_NO_THROW(refuseLeniency(read("Square S 1 1\nConnect S S\n")));
 }
 
 TEST(ForeignFormats, AreRefusedAsWhatTheyLookLike) {
-  const auto first = [](const std::string& content) { return errorsOf([&] { readBoardString(content, "f"); }).front(); };
+  const auto first = [](const std::string& content) {
+    return errorsOf([&] { readBoardString(content, "f"); }).front();
+  };
   const std::string tail = ", not a Gizmoball board of the text or XML format";
   EXPECT_EQ(first("[[\"Ball\",19,16,0.8,0.8,0]]"), "f: error: this looks like a JSON file (it starts with '[')" + tail);
   EXPECT_EQ(first(std::string("\xAC\xED\0\x05sr\0", 8)),
             "f: error: this looks like a Java serialisation stream (binary, it starts with the bytes AC ED)" + tail);
   EXPECT_EQ(first("x=310 y=90 r=70 class=SquareGizmo\n"),
             "f: error: this looks like a file of key=value fields ('x=310' on its first line)" + tail);
-  EXPECT_EQ(first("triangle 77 505 50 50\ncircle 217 140 50 50\n"),
-            "f: error: this looks like a pixel-coordinate map ('triangle' followed by x, y, width and height in pixels, "
-            "without a name)" + tail);
+  EXPECT_EQ(
+      first("triangle 77 505 50 50\ncircle 217 140 50 50\n"),
+      "f: error: this looks like a pixel-coordinate map ('triangle' followed by x, y, width and height in pixels, "
+      "without a name)" +
+          tail);
   EXPECT_EQ(first("Gravity 0.0 -25.0 0.0\nBall B0 5.5 5.5 10.0 0.0 0.0 0.0 1.0\n"),
             "f: error: this looks like a 3-D Gizmoball board ('Gravity' is a command of the .g3d format)" + tail);
   EXPECT_EQ(first("SquareBumper S0 1 3 1 1\n"),
             "f: error: this looks like a board of another Gizmoball dialect ('SquareBumper' with its own "
-            "coordinates)" + tail);
+            "coordinates)" +
+                tail);
   // Boards whose names are digits keep the shape of a pixel map and are boards all the same.
   EXPECT_EQ(readBoardString("Absorber 5 0 19 20 20\nBall 7 3 3 0 0\n", "f").board.gizmos.size(), 1u);
 }

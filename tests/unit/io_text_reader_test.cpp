@@ -145,8 +145,9 @@ TEST(TextReader, MessySpecExampleIsTheSameBoard) {
 // Commands.
 
 TEST(TextReader, EachGizmoGetsItsSize) {
-  const BoardSpec b = readText("Square S 0 0\nCircle C 1 0\nTriangle T 2 0\nLeftFlipper L 3 0\n"
-                               "RightFlipper R 5 0\nAbsorber A 0 10 7 13\n")
+  const BoardSpec b = readText(
+                          "Square S 0 0\nCircle C 1 0\nTriangle T 2 0\nLeftFlipper L 3 0\n"
+                          "RightFlipper R 5 0\nAbsorber A 0 10 7 13\n")
                           .board;
   ASSERT_EQ(b.gizmos.size(), 6u);
   for (int i = 0; i < 3; ++i) {
@@ -162,8 +163,9 @@ TEST(TextReader, EachGizmoGetsItsSize) {
 }
 
 TEST(TextReader, RotateTurnsAQuarterClockwiseAndKeepsSquaresTurned) {
-  const BoardSpec b = readText("Triangle T 1 1\nRotate T\nRotate T\nRotate T\nSquare S 3 3\nRotate S\n"
-                               "LeftFlipper F 5 5\nRotate F\nRotate F\nRotate F\nRotate F\n")
+  const BoardSpec b = readText(
+                          "Triangle T 1 1\nRotate T\nRotate T\nRotate T\nSquare S 3 3\nRotate S\n"
+                          "LeftFlipper F 5 5\nRotate F\nRotate F\nRotate F\nRotate F\n")
                           .board;
   EXPECT_EQ(gizmo(b, "T")->orientation, 270);
   EXPECT_EQ(gizmo(b, "S")->orientation, 90);
@@ -171,9 +173,10 @@ TEST(TextReader, RotateTurnsAQuarterClockwiseAndKeepsSquaresTurned) {
 }
 
 TEST(TextReader, MoveAndDelete) {
-  const BoardSpec b = readText("Square S 1 1\nBall B 5 5 1 2\nCircle C 7 7\nConnect S C\nConnect C S\n"
-                               "KeyConnect key 32 down C\nKeyConnect key 32 down S\n"
-                               "Move S 2 3\nMove B 6.5 7.25\nDelete C\n")
+  const BoardSpec b = readText(
+                          "Square S 1 1\nBall B 5 5 1 2\nCircle C 7 7\nConnect S C\nConnect C S\n"
+                          "KeyConnect key 32 down C\nKeyConnect key 32 down S\n"
+                          "Move S 2 3\nMove B 6.5 7.25\nDelete C\n")
                           .board;
   ASSERT_EQ(b.gizmos.size(), 1u);
   EXPECT_EQ(b.gizmos[0].x, 2);
@@ -216,16 +219,18 @@ TEST(TextReader, OuterWallsMayTrigger) {
 // d-g-n/CS308-GizmoBall writes its booster as NAME X Y, names starting with a digit, and turns
 // it with Rotate (its ballballcollisions.txt, lines 25-28): read as a booster without a warning.
 TEST(TextReader, BoostersAsTheirProgramWritesThem) {
-  const ReadResult r = readText("Booster 16_15 16 15\r\nRotate 16_15\r\nRotate 16_15\r\nRotate 16_15\r\n"
-                                "Booster 1_3 1 3\r\n");
+  const ReadResult r = readText(
+      "Booster 16_15 16 15\r\nRotate 16_15\r\nRotate 16_15\r\nRotate 16_15\r\n"
+      "Booster 1_3 1 3\r\n");
   ASSERT_EQ(countType(r.board, GizmoType::Booster), 2u);
   EXPECT_EQ(gizmo(r.board, "16_15")->orientation, 270);
   EXPECT_EQ(gizmo(r.board, "16_15")->x, 16);
   EXPECT_EQ(gizmo(r.board, "1_3")->orientation, 0);
   for (const std::string& w : formatted(r.warnings)) EXPECT_EQ(w.find("Booster"), std::string::npos) << w;
-  EXPECT_EQ(firstStrictError("Booster U 1"), "b.txt:1:1: error: Booster takes 3 values (Booster NAME X Y) but the line has 2; "
-                                             "it is another program's booster, left out, and so are the commands that "
-                                             "name 'U' (refused: --strict reads a board only as written)");
+  EXPECT_EQ(firstStrictError("Booster U 1"),
+            "b.txt:1:1: error: Booster takes 3 values (Booster NAME X Y) but the line has 2; "
+            "it is another program's booster, left out, and so are the commands that "
+            "name 'U' (refused: --strict reads a board only as written)");
 }
 
 // As lheckemann/gizmoball writes it (StandardLoader.java:188-201: Sink NAME X Y), read without a
@@ -331,8 +336,10 @@ TEST(TextReaderErrors, UnknownCommandsAreNamed) {
   // Words no Gizmoball program this reader knows gives a meaning: left out by name beside lines of
   // the format (io_board_rules_test.cpp); a file of nothing else is no board.
   for (const std::string cmd : {"Kircle", "NotAGizmo", "OuterWall", "model.Wall@5c0c0d45"}) {
-    const std::string want = "b.txt:2:3: error: no line of this file is a command of the Gizmoball format (the first "
-                             "line's word is '" + cmd + "')";
+    const std::string want =
+        "b.txt:2:3: error: no line of this file is a command of the Gizmoball format (the first "
+        "line's word is '" +
+        cmd + "')";
     EXPECT_EQ(firstTextError("\n  " + cmd + " X 1 1\n").substr(0, want.size()), want);
     const std::string warning = "b.txt:2:3: warning: '" + cmd + "' is not a command of the Gizmoball format";
     EXPECT_EQ(textWarnings("Square S 1 1\n  " + cmd + " X 1 1\n").at(0).substr(0, warning.size()), warning);
@@ -357,7 +364,8 @@ TEST(TextReaderErrors, TokenCounts) {
 TEST(TextReaderErrors, NumbersAreCheckedWholly) {
   EXPECT_EQ(firstTextError("Ball B 1.5xyz 2 0 0"), "b.txt:1:8: error: the x coordinate must be a number, not '1.5xyz'");
   EXPECT_EQ(firstTextError("Ball B 5 5 0 NaN"), "b.txt:1:14: error: the y velocity must be a finite number, not 'NaN'");
-  EXPECT_EQ(firstTextError("Ball B 5 -inf 0 0"), "b.txt:1:10: error: the y coordinate must be a finite number, not '-inf'");
+  EXPECT_EQ(firstTextError("Ball B 5 -inf 0 0"),
+            "b.txt:1:10: error: the y coordinate must be a finite number, not '-inf'");
   EXPECT_EQ(firstTextError("Gravity infinity"), "b.txt:1:9: error: gravity must be a finite number, not 'infinity'");
   EXPECT_EQ(firstTextError("Gravity 0x19"), "b.txt:1:9: error: gravity must be a decimal number, not '0x19'");
   EXPECT_EQ(firstTextError("Gravity 1e999"), "b.txt:1:9: error: gravity '1e999' is out of range");
@@ -368,7 +376,8 @@ TEST(TextReaderErrors, NumbersAreCheckedWholly) {
   EXPECT_EQ(firstTextError("Square S 3000000000 2"),
             "b.txt:1:10: error: the x coordinate '3000000000' is too large (the limit is 1000000000)");
   EXPECT_EQ(firstTextError("Move S 3.5 2"), "b.txt:1:6: error: there is no gizmo or ball named 'S'");
-  EXPECT_EQ(firstTextError("Square S 1 1\nMove S 3.5 y"), "b.txt:2:12: error: the y coordinate must be a number, not 'y'");
+  EXPECT_EQ(firstTextError("Square S 1 1\nMove S 3.5 y"),
+            "b.txt:2:12: error: the y coordinate must be a number, not 'y'");
 }
 
 TEST(TextReaderErrors, AcceptedNumberSpellings) {
@@ -381,8 +390,10 @@ TEST(TextReaderErrors, AcceptedNumberSpellings) {
 }
 
 TEST(TextReaderErrors, Names) {
-  EXPECT_EQ(firstTextError("Square OuterWalls 1 1"), "b.txt:1:8: error: the name OuterWalls is reserved for the outer walls");
-  EXPECT_EQ(firstTextError("Ball OuterWalls 5 5 0 0"), "b.txt:1:6: error: the name OuterWalls is reserved for the outer walls");
+  EXPECT_EQ(firstTextError("Square OuterWalls 1 1"),
+            "b.txt:1:8: error: the name OuterWalls is reserved for the outer walls");
+  EXPECT_EQ(firstTextError("Ball OuterWalls 5 5 0 0"),
+            "b.txt:1:6: error: the name OuterWalls is reserved for the outer walls");
   // Names are case-sensitive: these are two different gizmos.
   EXPECT_EQ(readText("Square s 1 1\nSquare S 3 3\n").board.gizmos.size(), 2u);
 }
@@ -402,13 +413,15 @@ TEST(TextReaderErrors, OperationsOnUnknownNames) {
 
 TEST(TextReaderErrors, RotateOnlyWhatTurns) {
   EXPECT_EQ(firstTextError("Absorber A 0 19 20 20\nRotate A"), "b.txt:2:8: error: absorber 'A' cannot be rotated");
-  EXPECT_EQ(firstTextError("Ball B 5 5 0 0\nRotate B"), "b.txt:2:8: error: ball 'B' cannot be rotated: only gizmos turn");
+  EXPECT_EQ(firstTextError("Ball B 5 5 0 0\nRotate B"),
+            "b.txt:2:8: error: ball 'B' cannot be rotated: only gizmos turn");
 }
 
 TEST(TextReaderErrors, KeyConnect) {
   EXPECT_EQ(firstTextError("Square S 1 1\nKeyConnect key 39 sideways S"),
             "b.txt:2:19: error: the key direction must be down or up, not 'sideways'");
-  EXPECT_EQ(firstTextError("Square S 1 1\nKeyConnect key -1 up S"), "b.txt:2:16: error: key code -1 is outside 0..65535");
+  EXPECT_EQ(firstTextError("Square S 1 1\nKeyConnect key -1 up S"),
+            "b.txt:2:16: error: key code -1 is outside 0..65535");
   EXPECT_EQ(firstTextError("Square S 1 1\nKeyConnect key 65536 up S"),
             "b.txt:2:16: error: key code 65536 is outside 0..65535");
   EXPECT_EQ(firstTextError("Square S 1 1\nKeyConnect key 3.5 up S"),
@@ -431,9 +444,12 @@ TEST(TextReaderErrors, AbsorberCorners) {
 }
 
 TEST(TextReaderErrors, GravityAndFrictionLimits) {
-  EXPECT_EQ(firstTextError("Friction 0.025 -1"), "b.txt:1:16: error: friction mu2 is -1; friction constants cannot be negative");
-  EXPECT_EQ(firstTextError("Gravity 2e6"), "b.txt:1:9: error: gravity 2000000 L/s^2 is beyond the limit of 1000000 L/s^2");
-  EXPECT_EQ(firstTextError("Friction 5e6 0"), "b.txt:1:10: error: friction mu = 5000000 is beyond the limit of 1000000");
+  EXPECT_EQ(firstTextError("Friction 0.025 -1"),
+            "b.txt:1:16: error: friction mu2 is -1; friction constants cannot be negative");
+  EXPECT_EQ(firstTextError("Gravity 2e6"),
+            "b.txt:1:9: error: gravity 2000000 L/s^2 is beyond the limit of 1000000 L/s^2");
+  EXPECT_EQ(firstTextError("Friction 5e6 0"),
+            "b.txt:1:10: error: friction mu = 5000000 is beyond the limit of 1000000");
 }
 
 TEST(TextReaderErrors, BoardChecksMapToTheirLines) {
@@ -447,7 +463,8 @@ TEST(TextReaderErrors, BoardChecksMapToTheirLines) {
             "b.txt:1:1: error: absorber 'A' covers x 0..21, y 19..20, not wholly on the board (0..20 in both); the "
             "absorber is left out (refused: --strict reads a board only as written)");
   EXPECT_EQ(firstStrictError("Absorber A 0 0 10 10\nLeftFlipper F 9 9"),
-            leftOut("b.txt:2:1: error: left flipper 'F' overlaps absorber 'A' from line 1 (both occupy cell 9,9)", "left flipper"));
+            leftOut("b.txt:2:1: error: left flipper 'F' overlaps absorber 'A' from line 1 (both occupy cell 9,9)",
+                    "left flipper"));
   EXPECT_EQ(firstStrictError("Ball B 20.1 5 0 0"),
             "b.txt:1:1: error: ball 'B' at (20.1, 5) is not on the board, which spans 0..20 L in both directions; the "
             "ball is left out (refused: --strict reads a board only as written)");
@@ -459,8 +476,9 @@ TEST(TextReaderErrors, BoardChecksMapToTheirLines) {
 
 TEST(TextReaderErrors, GizmoOverlapsAreDecidedByBoundingBoxes) {
   // Flippers fill only part of their 2×2 box, yet the boxes may not share area.
-  EXPECT_EQ(firstStrictError("LeftFlipper L 0 0\nSquare S 1 1"),
-            leftOut("b.txt:2:1: error: square 'S' overlaps left flipper 'L' from line 1 (both occupy cell 1,1)", "square"));
+  EXPECT_EQ(
+      firstStrictError("LeftFlipper L 0 0\nSquare S 1 1"),
+      leftOut("b.txt:2:1: error: square 'S' overlaps left flipper 'L' from line 1 (both occupy cell 1,1)", "square"));
   // Touching edges and corners is fine.
   EXPECT_NO_THROW(readStrict("LeftFlipper L 0 0\nSquare S 2 2\nSquare T 2 0\nAbsorber A 0 2 2 4\n"));
   // Each gizmo is reported once, with the earliest gizmo it overlaps, at the first shared cell.
@@ -482,8 +500,8 @@ TEST(TextReaderErrors, BallAgainstGizmoIsExact) {
   // Near a corner: these doubles lie just outside the quarter circle about (5, 5)...
   EXPECT_NO_THROW(readStrict("Square S 5 5\nBall B 4.85 4.8 0 0"));
   // ...and the next doubles towards the corner lie just inside it.
-  EXPECT_EQ(strictErrors("Square S 5 5\nBall B " + num(std::nextafter(4.85, 5.0)) + " " + num(std::nextafter(4.8, 5.0)) +
-                       " 0 0")
+  EXPECT_EQ(strictErrors("Square S 5 5\nBall B " + num(std::nextafter(4.85, 5.0)) + " " +
+                         num(std::nextafter(4.8, 5.0)) + " 0 0")
                 .size(),
             1u);
   // A circle bumper: radius 0.5 about the cell centre.
@@ -572,14 +590,17 @@ TEST(TextReaderErrors, WhatIsIncludesEveryDiagnostic) {
 
 TEST(TextReaderErrors, AbsurdInputs) {
   const std::string longLine = "Square S 1 1" + std::string(70000, ' ') + "\nRotate S";
-  EXPECT_EQ(textErrors(longLine),
-            (std::vector<std::string>{"b.txt:1:1: error: the line is longer than 65536 bytes; no board line is that long",
-                                      "b.txt:2:8: error: there is no gizmo named 'S'"}));
+  EXPECT_EQ(
+      textErrors(longLine),
+      (std::vector<std::string>{"b.txt:1:1: error: the line is longer than 65536 bytes; no board line is that long",
+                                "b.txt:2:8: error: there is no gizmo named 'S'"}));
   const std::string huge((std::size_t{16} << 20) + 1, '\n');
-  EXPECT_EQ(textErrors(huge), (std::vector<std::string>{"b.txt: error: the file is larger than 16 MiB, the limit for board files"}));
+  EXPECT_EQ(textErrors(huge),
+            (std::vector<std::string>{"b.txt: error: the file is larger than 16 MiB, the limit for board files"}));
   EXPECT_EQ(firstTextError(std::string("Square S 1 1\nBall B\0 5 5 0 0", 21)),
             "b.txt:2:7: error: unexpected control character (byte 0x00)");
-  EXPECT_EQ(firstTextError("Square S 1 1\rSquare T 2 2\n"), "b.txt:1:13: error: unexpected control character (byte 0x0D)");
+  EXPECT_EQ(firstTextError("Square S 1 1\rSquare T 2 2\n"),
+            "b.txt:1:13: error: unexpected control character (byte 0x0D)");
   std::string tooMany;
   for (int i = 0; i < 10001; ++i) tooMany += "Ball B" + std::to_string(i) + " 5 5 0 0\n";
   EXPECT_EQ(textErrors(tooMany),
@@ -594,9 +615,10 @@ TEST(TextReaderLenient, KeywordCase) {
   EXPECT_EQ(r.board.keyConnections.size(), 1u);
   EXPECT_EQ(r.board.keyConnections[0].direction, KeyDirection::Down);
   EXPECT_EQ(r.board.connections.size(), 1u);
-  EXPECT_EQ(formatted(r.warnings),
-            (std::vector<std::string>{"b.txt:1:1: warning: 'leftflipper' is written 'LeftFlipper' in the standard format; "
-                                      "keywords are read without regard to case (and 4 more like this)"}));
+  EXPECT_EQ(
+      formatted(r.warnings),
+      (std::vector<std::string>{"b.txt:1:1: warning: 'leftflipper' is written 'LeftFlipper' in the standard format; "
+                                "keywords are read without regard to case (and 4 more like this)"}));
 }
 
 TEST(TextReaderLenient, IntegralDecimals) {
@@ -604,8 +626,9 @@ TEST(TextReaderLenient, IntegralDecimals) {
   EXPECT_EQ(r.board.gizmos[0].x, 3);
   EXPECT_EQ(r.board.keyConnections[0].key, 76);
   EXPECT_EQ(r.board.gizmos[1].x, 10);
-  EXPECT_EQ(formatted(r.warnings), (std::vector<std::string>{"b.txt:1:10: warning: '3.0' is read as the whole number 3 "
-                                                             "(the standard format writes whole numbers here) (and 2 more like this)"}));
+  EXPECT_EQ(formatted(r.warnings),
+            (std::vector<std::string>{"b.txt:1:10: warning: '3.0' is read as the whole number 3 "
+                                      "(the standard format writes whole numbers here) (and 2 more like this)"}));
 }
 
 TEST(TextReaderLenient, CommentsCrlfAndWhiteSpace) {
@@ -617,17 +640,20 @@ TEST(TextReaderLenient, CommentsCrlfAndWhiteSpace) {
 }
 
 TEST(TextReaderLenient, RepeatedConnectionsAreDropped) {
-  const ReadResult r = readText("Square S 1 1\nConnect S S\nConnect OuterWalls S\nConnect S S\n"
-                                "KeyConnect key 1 up S\nKeyConnect key 1 up S\nKeyConnect key 1 down S\n");
+  const ReadResult r = readText(
+      "Square S 1 1\nConnect S S\nConnect OuterWalls S\nConnect S S\n"
+      "KeyConnect key 1 up S\nKeyConnect key 1 up S\nKeyConnect key 1 down S\n");
   EXPECT_EQ(r.board.connections.size(), 2u);
   EXPECT_EQ(r.board.keyConnections.size(), 2u);
-  EXPECT_EQ(formatted(r.warnings),
-            (std::vector<std::string>{"b.txt:4:1: warning: this connection repeats the one on line 2; the repetition is "
-                                      "ignored (and 1 more like this)"}));
+  EXPECT_EQ(
+      formatted(r.warnings),
+      (std::vector<std::string>{"b.txt:4:1: warning: this connection repeats the one on line 2; the repetition is "
+                                "ignored (and 1 more like this)"}));
 }
 
 TEST(TextReaderLenient, ByteOrderMarkDoesNotShiftColumns) {
-  EXPECT_EQ(firstTextError("\xEF\xBB\xBFSquare S x 1"), "b.txt:1:10: error: the x coordinate must be a number, not 'x'");
+  EXPECT_EQ(firstTextError("\xEF\xBB\xBFSquare S x 1"),
+            "b.txt:1:10: error: the x coordinate must be a number, not 'x'");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -656,7 +682,6 @@ TEST(TextFixtures, LenientFilesLoadWithTheirExpectedWarnings) {
 // ---------------------------------------------------------------------------------------------
 // readBoardFile and readBoardString.
 
-
 TEST(BoardFile, FileProblems) {
   const gizmo::test::ScratchDir dir;
   const std::string missing = (dir.path() / "missing.txt").string();
@@ -682,7 +707,8 @@ TEST(BoardFile, FormatIsChosenByTheFirstCharacter) {
   EXPECT_EQ(readBoardString("\xEF\xBB\xBF<board gravity='3'><gizmos/><connections/></board>", "x").board.gravity, 3.0);
   EXPECT_EQ(readBoardString("Gravity 3", "x").board.gravity, 3.0);
   // Not XML: the text reader reports it.
-  EXPECT_EQ(errorsOf([] { readBoardString("board <x/>", "x"); }).front().substr(0, 29), "x:1:1: error: no line of this");
+  EXPECT_EQ(errorsOf([] { readBoardString("board <x/>", "x"); }).front().substr(0, 29),
+            "x:1:1: error: no line of this");
 }
 
 }  // namespace

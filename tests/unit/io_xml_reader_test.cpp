@@ -26,7 +26,8 @@ std::vector<std::string> xmlWarnings(const std::string& s) { return formatted(re
 
 // A board around some gizmos and connections.
 std::string board(const std::string& gizmos, const std::string& connections = "") {
-  return "<board>\n  <gizmos>\n" + gizmos + "  </gizmos>\n  <connections>\n" + connections + "  </connections>\n</board>\n";
+  return "<board>\n  <gizmos>\n" + gizmos + "  </gizmos>\n  <connections>\n" + connections +
+         "  </connections>\n</board>\n";
 }
 
 TEST(XmlReader, SpecExampleInXmlIsTheSpecExample) {
@@ -123,9 +124,10 @@ TEST(XmlReaderErrors, NotWellFormedAtTheRightLineAndColumn) {
 }
 
 TEST(XmlReaderErrors, ExactlyOneRootNamedBoard) {
-  EXPECT_EQ(xmlErrors("<board><gizmos/><connections/></board>\n  <board/>"),
-            (std::vector<std::string>{
-                "x.xml:2:3: error: a second root element <board>: a board file has exactly one root element, <board>"}));
+  EXPECT_EQ(
+      xmlErrors("<board><gizmos/><connections/></board>\n  <board/>"),
+      (std::vector<std::string>{
+          "x.xml:2:3: error: a second root element <board>: a board file has exactly one root element, <board>"}));
   EXPECT_EQ(firstXmlError("<?xml version=\"1.0\"?>\n<Board/>"),
             "x.xml:2:1: error: the root element is <Board>; a board file's root element is <board>");
   EXPECT_EQ(firstXmlError(""), "x.xml: error: the file holds no XML element; a board file's root element is <board>");
@@ -223,7 +225,8 @@ TEST(XmlReaderErrors, BoardChecks) {
 // Leniency.
 
 TEST(XmlReaderLenient, Warnings) {
-  EXPECT_EQ(xmlWarnings("<board xmlns=\"urn:x\" xmlns:xsi=\"urn:y\" xsi:schemaLocation=\"z\"><gizmos/><connections/></board>"),
+  EXPECT_EQ(xmlWarnings(
+                "<board xmlns=\"urn:x\" xmlns:xsi=\"urn:y\" xsi:schemaLocation=\"z\"><gizmos/><connections/></board>"),
             std::vector<std::string>{});
   EXPECT_EQ(xmlWarnings("<board>\n<connections/>\n<gizmos/>\n</board>"),
             (std::vector<std::string>{
@@ -234,8 +237,9 @@ TEST(XmlReaderLenient, Warnings) {
   EXPECT_EQ(xmlWarnings(board("    <triangleBumper name=\"T\" x=\"1\" y=\"1\" orientation=\"90.0\"/>\n")),
             (std::vector<std::string>{
                 "x.xml:3:42: warning: '90.0' is read as the whole number 90 (the schema has whole numbers here)"}));
-  const ReadResult split = readXml("<board>\n<gizmos><squareBumper name=\"A\" x=\"1\" y=\"1\"/></gizmos>\n"
-                                   "<connections/>\n<gizmos><squareBumper name=\"B\" x=\"3\" y=\"3\"/></gizmos>\n</board>");
+  const ReadResult split = readXml(
+      "<board>\n<gizmos><squareBumper name=\"A\" x=\"1\" y=\"1\"/></gizmos>\n"
+      "<connections/>\n<gizmos><squareBumper name=\"B\" x=\"3\" y=\"3\"/></gizmos>\n</board>");
   EXPECT_EQ(split.board.gizmos.size(), 2u);
 }
 

@@ -60,7 +60,8 @@ TEST_P(EveryKind, HasAnExampleBoardWithIt) {
 TEST_P(EveryKind, ItsRowIsCompleteAndItsNamesAreItsOwn) {
   const GizmoKindInfo& k = gizmoKind(GetParam().type);
   EXPECT_EQ(k.type, GetParam().type);
-  for (std::string_view name : {k.textCommand, k.textUsage, k.xmlElement, k.word, k.drawing}) EXPECT_FALSE(name.empty());
+  for (std::string_view name : {k.textCommand, k.textUsage, k.xmlElement, k.word, k.drawing})
+    EXPECT_FALSE(name.empty());
   EXPECT_EQ(k.textUsage.substr(0, k.textCommand.size()), k.textCommand);
   for (const GizmoKindInfo& other : kGizmoKinds) {
     if (other.type == k.type) continue;
@@ -116,7 +117,7 @@ INSTANTIATE_TEST_SUITE_P(Registry, EveryKind, ::testing::ValuesIn(everyKind()),
 // GizmoType and GizmoKind follow the list with the values that logs and tests hold.
 TEST(KindRegistry, ValuesFollowTheList) {
   int i = 0;
-#define GIZMO_KIND_VALUE(Name, stem)                                     \
+#define GIZMO_KIND_VALUE(Name, stem)                                         \
   EXPECT_EQ(static_cast<int>(GizmoType::Name), i) << #Name;                  \
   EXPECT_EQ(static_cast<int>(gizmoKindOf(GizmoType::Name)), i + 2) << #Name; \
   ++i;

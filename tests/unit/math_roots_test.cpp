@@ -93,14 +93,12 @@ constexpr long kReferenceBits = 256;
 // intervals locates them, MPFR bisection at kReferenceBits pins each to the last point with
 // g > 0. The scenarios below keep every dip many samples wide and far above long double noise.
 template <class SampleFn, class BigFn>
-std::vector<MpfrReal> referenceEntries(const SampleFn& sampled, const BigFn& exact, double lo,
-                                       double hi, int samples) {
+std::vector<MpfrReal> referenceEntries(const SampleFn& sampled, const BigFn& exact, double lo, double hi, int samples) {
   std::vector<MpfrReal> entries;
   long double previous = sampled(static_cast<long double>(lo));
   long double previousT = lo;
   for (int i = 1; i <= samples; ++i) {
-    const long double t = static_cast<long double>(lo) +
-                          (static_cast<long double>(hi) - lo) * i / samples;
+    const long double t = static_cast<long double>(lo) + (static_cast<long double>(hi) - lo) * i / samples;
     const long double value = sampled(t);
     if (previous > 0 && value <= 0) {
       ScopedMpfrBits wide(kReferenceBits);
@@ -158,8 +156,7 @@ TYPED_TEST_SUITE(FirstEntryWide, WideScalars);
 template <class Real>
 void expectRootNear(const std::optional<Real>& r, double exact, double maxUlps) {
   ASSERT_TRUE(r.has_value()) << "expected an entry near " << exact;
-  EXPECT_LE(ulpsBetween(*r, exact), maxUlps)
-      << "got " << gizmo::toDouble(*r) << ", expected " << exact;
+  EXPECT_LE(ulpsBetween(*r, exact), maxUlps) << "got " << gizmo::toDouble(*r) << ", expected " << exact;
 }
 
 TYPED_TEST(FirstEntry, EntryNotExit) {
@@ -238,7 +235,7 @@ TYPED_TEST(FirstEntry, EveryDegree) {
   EXPECT_FALSE(gm::firstEntry(coefficients<Real>(0, 0, 0, 0, 0), lo, hi));
   // Degree 1.
   expectRootNear(gm::firstEntry(coefficients<Real>(1, -2, 0, 0, 0), lo, hi), 0.5, 0);
-  EXPECT_FALSE(gm::firstEntry(coefficients<Real>(-1, 2, 0, 0, 0), lo, hi));  // an exit
+  EXPECT_FALSE(gm::firstEntry(coefficients<Real>(-1, 2, 0, 0, 0), lo, hi));    // an exit
   EXPECT_FALSE(gm::firstEntry(coefficients<Real>(1, -0.5, 0, 0, 0), lo, hi));  // after hi
   // Reaching 0 exactly at hi while approaching is an entry at hi.
   expectRootNear(gm::firstEntry(coefficients<Real>(1, -1, 0, 0, 0), lo, hi), 1.0, 0);
@@ -272,8 +269,7 @@ TYPED_TEST(FirstEntry, TouchesAreNotEntries) {
   EXPECT_FALSE(gm::firstEntry(coefficients<Real>(0.25, -1, 1.25, -1, 1), lo, hi));
   // A near miss and a shallow overlap around the same point.
   EXPECT_FALSE(gm::firstEntry(coefficients<Real>(0.25 + 0x1p-20, -1, 1, 0, 0), lo, hi));
-  expectRootNear(gm::firstEntry(coefficients<Real>(0.25 - 0x1p-20, -1, 1, 0, 0), lo, hi),
-                 0.5 - 0x1p-10, 4);
+  expectRootNear(gm::firstEntry(coefficients<Real>(0.25 - 0x1p-20, -1, 1, 0, 0), lo, hi), 0.5 - 0x1p-10, 4);
   // An inflection that crosses: -(t - 1/2)^3 goes from > 0 to < 0 through a flat point.
   expectRootNear(gm::firstEntry(fromRoots<Real>(-1, {0.5, 0.5, 0.5}), lo, hi), 0.5, 0);
   // Reaching 0 at hi with zero slope and going negative after: (1 - t)^3.
@@ -300,9 +296,7 @@ TYPED_TEST(FirstEntry, NearDoubleRootsGiveTheFirst) {
   ASSERT_TRUE(r.has_value());
   EXPECT_LT(*r, fd<Real>(base + gap / 2));
   // Rejecting it gives nothing before 1: the second root is an exit.
-  EXPECT_FALSE(gm::firstEntry(c, Real(0), Real(1), [&](const Real& t) {
-    return t > fd<Real>(base + gap / 2);
-  }));
+  EXPECT_FALSE(gm::firstEntry(c, Real(0), Real(1), [&](const Real& t) { return t > fd<Real>(base + gap / 2); }));
   // Mirrored: overlapping before the pair, so the second root of the pair is the entry.
   const auto mirrored = fromRoots<Real>(1, {base, base + gap, 3});
   expectRootNear(gm::firstEntry(mirrored, Real(0), Real(1)), base + gap, 4);
@@ -311,7 +305,7 @@ TYPED_TEST(FirstEntry, NearDoubleRootsGiveTheFirst) {
 TYPED_TEST(FirstEntry, EmptyAndDegenerateWindows) {
   using Real = TypeParam;
   const auto c = fromRoots<Real>(1, {0.25, 0.75});
-  EXPECT_FALSE(gm::firstEntry(c, Real(1), Real(0)));                    // hi < lo
+  EXPECT_FALSE(gm::firstEntry(c, Real(1), Real(0)));                          // hi < lo
   EXPECT_FALSE(gm::firstEntry(c, Real(fd<Real>(0.1)), Real(fd<Real>(0.1))));  // apart at lo = hi
   const Real inside = fd<Real>(0.3);
   const auto r = gm::firstEntry(c, inside, inside);  // overlapping and approaching at lo = hi
@@ -331,7 +325,8 @@ template <class Real>
 NearCircleGap<Real> nearCircleGap(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(-1, 1);
   const double reach = 0.75, gravity = 25;
-  const double angle = 3.14159 * unit(rng), gapAway = std::ldexp(std::abs(unit(rng)), -int(10 + 30 * std::abs(unit(rng))));
+  const double angle = 3.14159 * unit(rng),
+               gapAway = std::ldexp(std::abs(unit(rng)), -int(10 + 30 * std::abs(unit(rng))));
   const double speed = std::ldexp(std::abs(unit(rng)), -int(8 * std::abs(unit(rng))));
   const double heading = 3.14159 * unit(rng);
   const double limit = 0.05 * std::abs(unit(rng)) + 1e-4;
@@ -522,8 +517,8 @@ TYPED_TEST(FirstEntryWide, RandomDyadicPolynomials) {
     }
   }
   EXPECT_GT(entriesChecked, 100);
-  std::cout << "[ firstEntry ] " << gizmo::scalarName<Real>() << ": " << entriesChecked
-            << " random entries, worst " << worstUlps << " ulp\n";
+  std::cout << "[ firstEntry ] " << gizmo::scalarName<Real>() << ": " << entriesChecked << " random entries, worst "
+            << worstUlps << " ulp\n";
 }
 
 // Ball under gravity against a circle: g(t) = |p + v t + a t^2/2 - C|^2 - R^2, coefficients
@@ -539,15 +534,12 @@ struct Ballistic {
     const Vec2<Real> a(fd<Real>(ax), fd<Real>(ay));
     const Real radius = fd<Real>(r);
     return {Real(gizmo::dot(d, d) - radius * radius), Real(Real(2) * gizmo::dot(d, v)),
-            Real(gizmo::dot(v, v) + gizmo::dot(d, a)), gizmo::dot(v, a),
-            Real(gizmo::dot(a, a) / Real(4))};
+            Real(gizmo::dot(v, v) + gizmo::dot(d, a)), gizmo::dot(v, a), Real(gizmo::dot(a, a) / Real(4))};
   }
   template <class Real>
   Real gap(const Real& t) const {  // straight from the geometry
-    const Real x = Real(fd<Real>(px) + fd<Real>(vx) * t + fd<Real>(ax) * t * t / Real(2)) -
-                   fd<Real>(cx);
-    const Real y = Real(fd<Real>(py) + fd<Real>(vy) * t + fd<Real>(ay) * t * t / Real(2)) -
-                   fd<Real>(cy);
+    const Real x = Real(fd<Real>(px) + fd<Real>(vx) * t + fd<Real>(ax) * t * t / Real(2)) - fd<Real>(cx);
+    const Real y = Real(fd<Real>(py) + fd<Real>(vy) * t + fd<Real>(ay) * t * t / Real(2)) - fd<Real>(cy);
     return x * x + y * y - fd<Real>(r) * fd<Real>(r);
   }
 };
@@ -556,8 +548,7 @@ TYPED_TEST(FirstEntry, BallisticBallAgainstCircle) {
   using Real = TypeParam;
   const Ballistic b;
   const std::vector<MpfrReal> reference = referenceEntries(
-      [&](long double t) { return b.gap(t); }, [&](const MpfrReal& t) { return b.gap(t); }, 0.0,
-      0.5, 20000);
+      [&](long double t) { return b.gap(t); }, [&](const MpfrReal& t) { return b.gap(t); }, 0.0, 0.5, 20000);
   ASSERT_EQ(reference.size(), 1u);
   const auto got = gm::firstEntry(b.quartic<Real>(), Real(0), Real(fd<Real>(0.5)));
   ASSERT_TRUE(got.has_value());
@@ -566,9 +557,8 @@ TYPED_TEST(FirstEntry, BallisticBallAgainstCircle) {
   // ulps of the root more than for exact coefficients.
   const double eps = gizmo::toDouble(gizmo::epsilonOf<Real>());
   EXPECT_LE(error, 8 * eps * 0.14) << "root " << gizmo::toDouble(*got);
-  std::cout << "[ firstEntry ] " << gizmo::scalarName<Real>() << ": ballistic root "
-            << gizmo::toDouble(*got) << ", error " << error << " = " << error / (eps * 0.14)
-            << " eps*t\n";
+  std::cout << "[ firstEntry ] " << gizmo::scalarName<Real>() << ": ballistic root " << gizmo::toDouble(*got)
+            << ", error " << error << " = " << error / (eps * 0.14) << " eps*t\n";
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -582,8 +572,8 @@ struct FlipperScenario {
 
   // A scenario where, at tStar, the ball sits at `along` along the flipper and `offset` off its
   // line, with gap slope `slope` and (if slope == 0) gap curvature `curvature`.
-  static FlipperScenario make(double tStar, double thStar, double w, double along, double offset,
-                              double r, double slope, double curvature, double ay) {
+  static FlipperScenario make(double tStar, double thStar, double w, double along, double offset, double r,
+                              double slope, double curvature, double ay) {
     FlipperScenario s;
     const double ux = std::cos(thStar), uy = std::sin(thStar);
     const double mx = uy, my = -ux;  // cross(m, u) = 1
@@ -642,9 +632,7 @@ struct FlipperGap {
     gm::sinCos(Real(th0 + w * t), s, c);
     return Vec2<Real>(c, s);
   }
-  Real value(const Real& t) const {
-    return gizmo::cross(Vec2<Real>(centre(t) - pivot), direction(t)) - r;
-  }
+  Real value(const Real& t) const { return gizmo::cross(Vec2<Real>(centre(t) - pivot), direction(t)) - r; }
   Real slope(const Real& t) const {
     const Vec2<Real> u = direction(t);
     const Vec2<Real> du = Vec2<Real>(-u.y, u.x) * w;
@@ -664,8 +652,7 @@ struct FlipperGap {
     return pad(speedBound(lo, hi) + gizmo::absOf(w) * reachBound(lo, hi));
   }
   Real curvatureBound(const Real& lo, const Real& hi) const {
-    return pad(gizmo::length(a) + Real(2) * gizmo::absOf(w) * speedBound(lo, hi) +
-               w * w * reachBound(lo, hi));
+    return pad(gizmo::length(a) + Real(2) * gizmo::absOf(w) * speedBound(lo, hi) + w * w * reachBound(lo, hi));
   }
 };
 
@@ -680,9 +667,7 @@ double rootTolerance(double slope) {
 }
 
 // A ball falling onto a flipper swinging up: gap slope -5 L/s at the hit, t ~ 0.04 s.
-FlipperScenario hitScenario() {
-  return FlipperScenario::make(0.04, 0.3, 15.0, 1.0, 0.25, 0.25, -5.0, 0.0, 25.0);
-}
+FlipperScenario hitScenario() { return FlipperScenario::make(0.04, 0.3, 15.0, 1.0, 0.25, 0.25, -5.0, 0.0, 25.0); }
 // The ball skims the flipper: the gap dips 1e-6 below zero for about 6e-5 s around t = 0.05005.
 FlipperScenario dipScenario() {
   return FlipperScenario::make(0.05005, 0.3, 15.0, 1.0, 0.25 - 1e-6, 0.25, 0.0, 2000.0, 0.0);
@@ -693,13 +678,12 @@ FlipperScenario dipScenario() {
 template <class Real>
 void expectSingleSmoothEntry(const FlipperScenario& s, double slopeAtEntry, const char* what) {
   const auto reference = referenceEntries([&](long double t) { return s.sampled(t); },
-                                          [&](const MpfrReal& t) { return s.exact(t); }, 0.0, 0.1,
-                                          100000);
+                                          [&](const MpfrReal& t) { return s.exact(t); }, 0.0, 0.1, 100000);
   ASSERT_EQ(reference.size(), 1u);
   const FlipperGap<Real> gap(s);
   gm::SmoothSearchInfo info;
-  const auto got = gm::firstEntrySmooth(gap, Real(0), Real(fd<Real>(0.1)),
-                                        [](const Real&) { return true; }, &info);
+  const auto got = gm::firstEntrySmooth(
+      gap, Real(0), Real(fd<Real>(0.1)), [](const Real&) { return true; }, &info);
   ASSERT_TRUE(got.has_value());
   EXPECT_FALSE(info.capped);
   const double error = distance(*got, reference[0]);
@@ -711,9 +695,7 @@ void expectSingleSmoothEntry(const FlipperScenario& s, double slopeAtEntry, cons
 TYPED_TEST(FirstEntrySmooth, FlipperHit) { expectSingleSmoothEntry<TypeParam>(hitScenario(), 5.0, "hit"); }
 
 // At the entry the slope is about sqrt(2 * 1e-6 * 2000) = 0.063.
-TYPED_TEST(FirstEntrySmooth, ShortDipIsFound) {
-  expectSingleSmoothEntry<TypeParam>(dipScenario(), 0.063, "dip entry");
-}
+TYPED_TEST(FirstEntrySmooth, ShortDipIsFound) { expectSingleSmoothEntry<TypeParam>(dipScenario(), 0.063, "dip entry"); }
 
 TEST(FirstEntrySmoothScenario, CoarseSamplingMissesTheDip) {
   // What makes ShortDipIsFound meaningful: 1000 evenly spaced samples never see the overlap.
@@ -726,8 +708,7 @@ TEST(FirstEntrySmoothScenario, CoarseSamplingMissesTheDip) {
 // (exit).
 template <class Real>
 struct CosinePairGap {
-  Real th0 = fd<Real>(-0.5), w = fd<Real>(10), lowA = fd<Real>(1 - 0x1p-12),
-       lowB = fd<Real>(1 - 0x1p-13);
+  Real th0 = fd<Real>(-0.5), w = fd<Real>(10), lowA = fd<Real>(1 - 0x1p-12), lowB = fd<Real>(1 - 0x1p-13);
   Real cosine(const Real& t, Real* sine = nullptr) const {
     Real s, c;
     gm::sinCos(Real(th0 + w * t), s, c);
@@ -778,10 +759,9 @@ TYPED_TEST(FirstEntrySmooth, TwoCloseEntries) {
   EXPECT_LE(distance(*second, reference[1]), tolerance);
   ASSERT_EQ(offered.size(), 2u);
   EXPECT_LT(offered[0], offered[1]);
-  std::cout << "[ smooth ] " << gizmo::scalarName<Real>() << ": close entries at "
-            << gizmo::toDouble(*first) << " and " << gizmo::toDouble(*second) << ", errors "
-            << distance(*first, reference[0]) << " and " << distance(*second, reference[1])
-            << " s\n";
+  std::cout << "[ smooth ] " << gizmo::scalarName<Real>() << ": close entries at " << gizmo::toDouble(*first) << " and "
+            << gizmo::toDouble(*second) << ", errors " << distance(*first, reference[0]) << " and "
+            << distance(*second, reference[1]) << " s\n";
   // Rejecting both leaves nothing: the crossings between are exits.
   EXPECT_FALSE(gm::firstEntrySmooth(gap, lo, hi, [](const Real&) { return false; }));
 }
@@ -800,12 +780,11 @@ TYPED_TEST(FirstEntrySmooth, StartsTouchingAndApproaching) {
 TYPED_TEST(FirstEntrySmooth, NearMissHasNoEntry) {
   using Real = TypeParam;
   // Like the dip, but the ball stays 1e-6 clear.
-  const FlipperScenario s =
-      FlipperScenario::make(0.05005, 0.3, 15.0, 1.0, 0.25 + 1e-6, 0.25, 0.0, 2000.0, 0.0);
+  const FlipperScenario s = FlipperScenario::make(0.05005, 0.3, 15.0, 1.0, 0.25 + 1e-6, 0.25, 0.0, 2000.0, 0.0);
   const FlipperGap<Real> gap(s);
   gm::SmoothSearchInfo info;
-  EXPECT_FALSE(gm::firstEntrySmooth(gap, Real(0), Real(fd<Real>(0.1)),
-                                    [](const Real&) { return true; }, &info));
+  EXPECT_FALSE(gm::firstEntrySmooth(
+      gap, Real(0), Real(fd<Real>(0.1)), [](const Real&) { return true; }, &info));
   EXPECT_FALSE(info.capped);
   EXPECT_LT(info.evaluations, 5000);
 }
@@ -814,15 +793,14 @@ TYPED_TEST(FirstEntrySmooth, EvaluationCapGivesAnEarlyAnswer) {
   using Real = TypeParam;
   const FlipperScenario s = dipScenario();
   const auto reference = referenceEntries([&](long double t) { return s.sampled(t); },
-                                          [&](const MpfrReal& t) { return s.exact(t); }, 0.0, 0.1,
-                                          100000);
+                                          [&](const MpfrReal& t) { return s.exact(t); }, 0.0, 0.1, 100000);
   ASSERT_EQ(reference.size(), 1u);
   const FlipperGap<Real> gap(s);
   for (long cap : {1L, 5L, 20L, 50L}) {
     gm::SmoothSearchInfo info;
     info.maxEvaluations = cap;
-    const auto got = gm::firstEntrySmooth(gap, Real(0), Real(fd<Real>(0.1)),
-                                          [](const Real&) { return true; }, &info);
+    const auto got = gm::firstEntrySmooth(
+        gap, Real(0), Real(fd<Real>(0.1)), [](const Real&) { return true; }, &info);
     ASSERT_TRUE(got.has_value()) << "cap " << cap;
     EXPECT_TRUE(info.capped) << "cap " << cap;
     EXPECT_GE(info.evaluations, cap);

@@ -43,7 +43,7 @@ void assign(Big& dst, const Float128& x) {
 void assign(Big& dst, const MpfrReal& x) { mpfr_set(dst.get(), x.backend().data(), MPFR_RNDN); }
 // cpp_bin_float: the doubles its leading bits round to, each taken off exactly.
 template <class Real>
-  requires std::is_same_v<Real, gizmo::Bin50> || std::is_same_v<Real, gizmo::Bin100>
+requires std::is_same_v<Real, gizmo::Bin50> || std::is_same_v<Real, gizmo::Bin100>
 void assign(Big& dst, const Real& x) {
   mpfr_set_zero(dst.get(), 1);
   Real rest = x;
@@ -83,8 +83,7 @@ std::vector<Real> samplePoints(int randomCount) {
   const Real one = 1;
   const Real halfPi = gizmo::piOf<Real>() / Real(2);
   const Real quarterPi = gizmo::piOf<Real>() / Real(4);
-  for (double d : {0.0, 1e-30, 1e-20, 1e-10, 1e-5, 1e-3, 0.1, 0.5, 0.78, 0.7800000001, 1.0, 1.5,
-                   1.9999999, 2.0}) {
+  for (double d : {0.0, 1e-30, 1e-20, 1e-10, 1e-5, 1e-3, 0.1, 0.5, 0.78, 0.7800000001, 1.0, 1.5, 1.9999999, 2.0}) {
     xs.push_back(gizmo::fromDouble<Real>(d));
   }
   for (int k = -20; k <= 20; ++k) {
@@ -99,8 +98,8 @@ std::vector<Real> samplePoints(int randomCount) {
   std::uniform_real_distribution<double> fine(-1.0, 1.0);
   for (int i = 0; i < randomCount; ++i) {
     // The second part fills the bits below a double's for the wide scalars.
-    Real x = gizmo::fromDouble<Real>(coarse(rng)) + gizmo::fromDouble<Real>(fine(rng)) *
-                                                        gizmo::fromDouble<Real>(0x1p-53);
+    Real x =
+        gizmo::fromDouble<Real>(coarse(rng)) + gizmo::fromDouble<Real>(fine(rng)) * gizmo::fromDouble<Real>(0x1p-53);
     if (x > Real(2)) x = Real(2);
     if (x < Real(0)) x = -x;
     xs.push_back(x);
@@ -156,8 +155,8 @@ void checkAgainstMpfr(long truthBits) {
     ASSERT_LE(es, kMaxUlps) << "sin at x = " << gizmo::toDouble(x);
     ASSERT_LE(ec, kMaxUlps) << "cos at x = " << gizmo::toDouble(x);
   }
-  std::cout << "[ sinCos ] " << gizmo::scalarName<Real>() << ": " << xs.size()
-            << " points, worst sin " << worstSin << " ulp, worst cos " << worstCos << " ulp\n";
+  std::cout << "[ sinCos ] " << gizmo::scalarName<Real>() << ": " << xs.size() << " points, worst sin " << worstSin
+            << " ulp, worst cos " << worstCos << " ulp\n";
 }
 
 TYPED_TEST(SinCosTest, WithinOneUlpOfMpfr) { checkAgainstMpfr<TypeParam>(200); }

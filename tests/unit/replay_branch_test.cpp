@@ -163,7 +163,8 @@ std::string differenceOf(const DecisionView& x, const DecisionView& y) {
 
 std::string stateText(const StateView& s) {
   std::string out = s.time.text + " " + std::to_string(s.events);
-  for (const BallView& b : s.balls) out += " " + b.name + " " + b.x.text + " " + b.y.text + " " + b.vx.text + " " + b.vy.text;
+  for (const BallView& b : s.balls)
+    out += " " + b.name + " " + b.x.text + " " + b.y.text + " " + b.vx.text + " " + b.vy.text;
   for (const std::string& q : s.queue) out += "\n" + q;
   return out;
 }
@@ -328,7 +329,9 @@ INSTANTIATE_TEST_SUITE_P(GoldenBoards, ReplayBranch, ::testing::ValuesIn(allPare
                          });
 
 // The spec example with the flipper keys, ballistic, 5 s: the parent of the tests below.
-Bytes specParent() { return recordParent(ParentCase{"boards/spec-example.txt", MotionModel::Ballistic, "double", 5, true}); }
+Bytes specParent() {
+  return recordParent(ParentCase{"boards/spec-example.txt", MotionModel::Ballistic, "double", 5, true});
+}
 
 // Other key input: the branch goes its own way, and the logs part no earlier than the start of
 // the branch point's tick, where its keys are queued; with no key of the parent's in that tick
@@ -339,9 +342,9 @@ TEST(ReplayBranchKeys, OtherKeysPartAfterTheBranchPoint) {
   const std::vector<DecisionView> theirs = decisionsOf(parent);
   // The parent presses the space bar at 1.0 s; branch at 0.77 s (no key of the parent's in that
   // tick) with none, and at 0.5 s with an extra press at 0.6 s.
-  for (const auto& [at, keys] : {std::pair{0.77, std::vector<TimedKey>{}},
-                                 std::pair{0.5, std::vector<TimedKey>{{0.6, 32, KeyDirection::Down},
-                                                                     {0.65, 32, KeyDirection::Up}}}}) {
+  for (const auto& [at, keys] :
+       {std::pair{0.77, std::vector<TimedKey>{}},
+        std::pair{0.5, std::vector<TimedKey>{{0.6, 32, KeyDirection::Down}, {0.65, 32, KeyDirection::Up}}}}) {
     SCOPED_TRACE("branch at " + std::to_string(at) + " s");
     BranchRequest request;
     request.at.time = at;
@@ -422,7 +425,8 @@ TEST(ReplayBranchRefusals, SayWhatIsWrongAndWriteNothing) {
 TEST(ReplayBranchRefusals, DiffAgainstALogThatIsNotTheParent) {
   const OpenedLog parent = openBytes(specParent());
   const OpenedLog branch = openBytes(branchOf(parent, 50, parent.request.keys));
-  const OpenedLog other = openBytes(recordParent(ParentCase{"boards/spec-example.txt", MotionModel::Ballistic, "double", 4, true}));
+  const OpenedLog other =
+      openBytes(recordParent(ParentCase{"boards/spec-example.txt", MotionModel::Ballistic, "double", 4, true}));
   try {
     diffLogs(other, branch, 3, false);
     ADD_FAILURE() << "a branch compared with a log it was not taken from";

@@ -87,8 +87,8 @@ TEST(ReplayBytes, SvarintZigzagAndRoundTrips) {
   w.svarint(64);
   EXPECT_EQ(written(w), (Bytes{0x00, 0x01, 0x02, 0x7F, 0x80, 0x01}));
 
-  const std::int64_t values[] = {0,  1,   -1,  63, -64, 64, -65, 127, 128, -128,
-                                 INT64_MAX, INT64_MIN, INT64_MIN + 1, INT64_MAX - 1};
+  const std::int64_t values[] = {0,   1,    -1,        63,        -64,           64,           -65, 127,
+                                 128, -128, INT64_MAX, INT64_MIN, INT64_MIN + 1, INT64_MAX - 1};
   ByteWriter all;
   for (std::int64_t v : values) all.svarint(v);
   const Bytes bytes = written(all);
@@ -123,7 +123,12 @@ TEST(ReplayBytes, ManyVarintsRoundTripAcrossGrowth) {
 }
 
 TEST(ReplayBytes, TruncatedVarintThrowsAtItsStart) {
-  EXPECT_EQ(failureOffset({0x05, 0x80}, [](ByteReader& r) { r.u8(); r.varint(); }), 1u);
+  EXPECT_EQ(failureOffset({0x05, 0x80},
+                          [](ByteReader& r) {
+                            r.u8();
+                            r.varint();
+                          }),
+            1u);
   EXPECT_EQ(failureOffset({0xFF, 0xFF, 0xFF}, [](ByteReader& r) { r.varint(); }), 0u);
   EXPECT_EQ(failureOffset({}, [](ByteReader& r) { r.varint(); }), 0u);
   EXPECT_EQ(failureOffset({}, [](ByteReader& r) { r.svarint(); }), 0u);
@@ -150,13 +155,25 @@ TEST(ReplayBytes, OverlongAndOverflowingVarintsThrow) {
 TEST(ReplayBytes, UnderflowThrowsWithOffsetAndMessage) {
   const Bytes three = {1, 2, 3};
   EXPECT_EQ(failureOffset(three, [](ByteReader& r) { r.u32(); }), 0u);
-  EXPECT_EQ(failureOffset(three, [](ByteReader& r) { r.u8(); r.u16(); r.u8(); }), 3u);
-  EXPECT_EQ(failureOffset(three, [](ByteReader& r) { r.u8(); r.u64(); }), 1u);
+  EXPECT_EQ(failureOffset(three,
+                          [](ByteReader& r) {
+                            r.u8();
+                            r.u16();
+                            r.u8();
+                          }),
+            3u);
+  EXPECT_EQ(failureOffset(three,
+                          [](ByteReader& r) {
+                            r.u8();
+                            r.u64();
+                          }),
+            1u);
   EXPECT_EQ(failureOffset(three, [](ByteReader& r) { r.span(4); }), 0u);
-  EXPECT_EQ(failureOffset(three, [](ByteReader& r) {
-              std::uint8_t out[4];
-              r.bytes(out, 4);
-            }),
+  EXPECT_EQ(failureOffset(three,
+                          [](ByteReader& r) {
+                            std::uint8_t out[4];
+                            r.bytes(out, 4);
+                          }),
             0u);
 
   ByteReader r(three);

@@ -179,23 +179,21 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 std::string describe(const std::optional<DecisionView>& d) {
   if (!d) return "(none: that side had ended)";
   std::ostringstream os;
-  os << "decision " << d->index << " (after " << d->eventIndex << " events): " << decisionTypeName(d->type) << " t="
-     << d->time.text;
+  os << "decision " << d->index << " (after " << d->eventIndex << " events): " << decisionTypeName(d->type)
+     << " t=" << d->time.text;
   switch (d->type) {
     case DecisionType::Scheduled:
     case DecisionType::Removed:
     case DecisionType::Executed:
-      os << " " << eventKindName(d->kind) << " at " << d->eventTime.text << " a=" << d->a << " b=" << d->b << " feature=" << d->feature
-         << " seq=" << d->sequence;
+      os << " " << eventKindName(d->kind) << " at " << d->eventTime.text << " a=" << d->a << " b=" << d->b
+         << " feature=" << d->feature << " seq=" << d->sequence;
       for (const BallView& b : d->balls)
         os << " [" << b.name << " at (" << b.x.text << ", " << b.y.text << ") v (" << b.vxBefore.text << ", "
            << b.vyBefore.text << ") -> (" << b.vx.text << ", " << b.vy.text << ")]";
       break;
     case DecisionType::Trigger: os << " " << d->gizmo << " -> " << d->other; break;
     case DecisionType::Action: os << " gizmo " << d->gizmo; break;
-    case DecisionType::Input:
-      os << " key " << d->key << (d->direction == KeyDirection::Up ? " up" : " down");
-      break;
+    case DecisionType::Input: os << " key " << d->key << (d->direction == KeyDirection::Up ? " up" : " down"); break;
     case DecisionType::Rule: os << " rule " << int(d->rule) << " gizmo " << d->gizmo << " other " << d->other; break;
     case DecisionType::Tick:
     case DecisionType::Time: break;
@@ -409,9 +407,10 @@ TEST(ReplayLog, ALogOfAnotherScalarFormatIsRefused) {
 
 TEST(ReplayLog, TheHeaderNamesTheScalarsFormat) {
   const RunRequest request = requestFor("boards/spec-example.txt", MotionModel::Ballistic, 0.2);
-  for (const auto& [precision, format] :
-       {std::pair{Precision::Float, "binary32"}, {Precision::Double, "binary64"},
-        {Precision::LongDouble, hardwareFormatOf<long double>()}, {Precision::Float128, "binary128"}}) {
+  for (const auto& [precision, format] : {std::pair{Precision::Float, "binary32"},
+                                          {Precision::Double, "binary64"},
+                                          {Precision::LongDouble, hardwareFormatOf<long double>()},
+                                          {Precision::Float128, "binary128"}}) {
     const Recorded rec = record(request, PrecisionChoice{precision, 0}, "format");
     EXPECT_EQ(openBytes(rec.bytes).header.format, format) << precisionName(PrecisionChoice{precision, 0});
   }
@@ -434,7 +433,7 @@ TEST(ReplayLog, ReplaySaysWhenTheIndexDigestsDoNotMatchTheRecords) {
   r.varint();  // the first chunk's offset, events and ticks
   r.varint();
   r.varint();
-  r.u64();     // its time
+  r.u64();  // its time
   const std::size_t digestAt = payloadAt + r.position();
   putU64(tampered, digestAt, readU64(tampered, digestAt) ^ 1);
   resealFrame(tampered, indexAt);
@@ -466,8 +465,7 @@ Detected detect(Bytes bytes) {
     // stream throw at the latest when it reaches that chunk. Checking them first is only faster.
     for (std::size_t i = 0; i < log.reader.chunks().size(); ++i) (void)log.reader.chunkPayload(i);
     DecisionStream stream(log);
-    while (stream.next()) {
-    }
+    while (stream.next()) {}
     stage = Detected::Replaying;
     const ReplayReport report = replayLog(log);
     if (!report.identical || !report.note.empty()) return Detected::Replaying;
@@ -501,8 +499,9 @@ void expectEveryCorruptionDetected(const Bytes& clean, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   const std::size_t stride = clean.size() < 40000 ? 1 : 23;
   for (std::size_t p = std::size_t(rng() % stride); p < clean.size(); p += stride) positions.insert(p);
-  std::printf("corrupting %zu of %zu byte positions of a log of %zu chunks (payload stride %zu, mt19937_64 seed %llu)\n",
-              positions.size(), clean.size(), chunks.size(), stride, static_cast<unsigned long long>(seed));
+  std::printf(
+      "corrupting %zu of %zu byte positions of a log of %zu chunks (payload stride %zu, mt19937_64 seed %llu)\n",
+      positions.size(), clean.size(), chunks.size(), stride, static_cast<unsigned long long>(seed));
 
   std::map<Detected, std::size_t> counts;
   std::vector<std::size_t> missed;
@@ -548,8 +547,8 @@ TEST(ReplayLog, DamagedRecordsNeverCrashTheDecoder) {
   std::size_t rejected = 0, tried = 0, replayRejected = 0, replayedIdentical = 0;
   for (std::size_t i = 0; i < log.reader.chunks().size(); ++i) {
     const std::uint64_t from = log.reader.chunks()[i].offset + kFrameHeaderSize;
-    const std::uint64_t to = (i + 1 < log.reader.chunks().size() ? log.reader.chunks()[i + 1].offset : index) -
-                             kFrameChecksumSize;
+    const std::uint64_t to =
+        (i + 1 < log.reader.chunks().size() ? log.reader.chunks()[i + 1].offset : index) - kFrameChecksumSize;
     // The first bytes (preamble, keyframe) densely, the records sparsely.
     std::vector<std::uint64_t> at;
     for (std::uint64_t p = from; p < from + 200 && p < to; p += 3) at.push_back(p);
@@ -562,8 +561,7 @@ TEST(ReplayLog, DamagedRecordsNeverCrashTheDecoder) {
         const OpenedLog bad = openBytes(std::move(damaged), /*verifyChecksums=*/false);
         try {
           DecisionStream stream(bad, log.reader.chunks()[i].time);
-          for (int n = 0; n < 100000 && stream.next(); ++n) {
-          }
+          for (int n = 0; n < 100000 && stream.next(); ++n) {}
         } catch (const std::exception&) {
           ++rejected;
         }
@@ -576,9 +574,10 @@ TEST(ReplayLog, DamagedRecordsNeverCrashTheDecoder) {
       }
     }
   }
-  std::printf("%zu damaged chunks read without checksums (mt19937_64 seed %llu): %zu rejected by the stream, %zu "
-              "by replay, %zu replayed as identical\n",
-              tried, static_cast<unsigned long long>(kSeed), rejected, replayRejected, replayedIdentical);
+  std::printf(
+      "%zu damaged chunks read without checksums (mt19937_64 seed %llu): %zu rejected by the stream, %zu "
+      "by replay, %zu replayed as identical\n",
+      tried, static_cast<unsigned long long>(kSeed), rejected, replayRejected, replayedIdentical);
   // Even unchecked, a damaged chunk differs from the run's own: replay never calls it identical.
   EXPECT_EQ(replayedIdentical, 0u);
 }
@@ -629,8 +628,7 @@ std::string walkError(const Bytes& log) {
   try {
     const OpenedLog opened = openBytes(log);
     DecisionStream stream(opened);
-    while (stream.next()) {
-    }
+    while (stream.next()) {}
   } catch (const FormatError& e) {
     return e.what();
   }
@@ -642,7 +640,8 @@ TEST(ReplayLog, ALogCannotMakeTheReaderHoldMoreEventsThanTheBoardCan) {
   const RunRequest request = requestFor("boards/spec-example.txt", MotionModel::Ballistic, 0.01);
   const Recorded mpfr = record(request, PrecisionChoice{Precision::Mpfr, 100000}, "mpfr-header");
   const Bytes endOfTickNow(100000, 0x07);  // "an end of tick is scheduled now", over and over
-  EXPECT_PRED2(contains, walkError(handMadeLog(mpfr.bytes, endOfTickNow)), "more queued events than the board can hold");
+  EXPECT_PRED2(contains, walkError(handMadeLog(mpfr.bytes, endOfTickNow)),
+               "more queued events than the board can hold");
 }
 
 TEST(ReplayLog, EveryRecordHasOneSpelling) {
@@ -682,8 +681,19 @@ TEST(ReplayLog, CutOffLogsKeepTheirCompleteChunks) {
   }
   decisionsBefore.push_back(allDecisions);
 
-  std::set<std::uint64_t> cuts{0, 1, 7, 8, 9, 10, 11, kFileHeaderSize, kFileHeaderSize + 1, kFileHeaderSize + 4,
-                               kFileHeaderSize + kFrameHeaderSize, firstChunk - kFrameChecksumSize, firstChunk - 1};
+  std::set<std::uint64_t> cuts{0,
+                               1,
+                               7,
+                               8,
+                               9,
+                               10,
+                               11,
+                               kFileHeaderSize,
+                               kFileHeaderSize + 1,
+                               kFileHeaderSize + 4,
+                               kFileHeaderSize + kFrameHeaderSize,
+                               firstChunk - kFrameChecksumSize,
+                               firstChunk - 1};
   for (std::size_t i = 0; i < chunks.size(); ++i) {
     const std::uint64_t at = chunks[i].offset, end = i + 1 < chunks.size() ? chunks[i + 1].offset : index;
     for (std::uint64_t c : {at, at + 1, at + 4, at + kFrameHeaderSize, at + kFrameHeaderSize + 1, (at + end) / 2,
@@ -699,15 +709,14 @@ TEST(ReplayLog, CutOffLogsKeepTheirCompleteChunks) {
     const Bytes bytes(full.begin(), full.begin() + std::ptrdiff_t(cut));
     if (cut < firstChunk) {
       const std::string message = messageOf([&] { (void)openBytes(bytes); });
-      EXPECT_TRUE(contains(message, cut < kFileHeaderSize ? "too short"
+      EXPECT_TRUE(contains(message, cut < kFileHeaderSize    ? "too short"
                                     : cut == kFileHeaderSize ? "ends before its header frame"
                                                              : "header frame is cut off"))
           << message;
       continue;
     }
     std::size_t complete = 0;
-    while (complete < chunks.size() &&
-           (complete + 1 < chunks.size() ? chunks[complete + 1].offset : index) <= cut)
+    while (complete < chunks.size() && (complete + 1 < chunks.size() ? chunks[complete + 1].offset : index) <= cut)
       ++complete;
     std::optional<OpenedLog> log;
     try {
@@ -791,7 +800,8 @@ TEST(ReplayLog, BadFilesSayWhatIsWrong) {
     Bytes b = good;
     b[8] = old;
     const std::string message = openedMessage(b);
-    EXPECT_TRUE(contains(message, "version " + std::to_string(old) + " is older than this build reads (4); record the run again"))
+    EXPECT_TRUE(contains(
+        message, "version " + std::to_string(old) + " is older than this build reads (4); record the run again"))
         << message;
   }
   {
@@ -815,8 +825,7 @@ TEST(ReplayLog, BadFilesSayWhatIsWrong) {
     EXPECT_TRUE(contains(message, "absurd frame length")) << message;
     const std::string streamed = messageOf([&] {
       DecisionStream stream(opened);
-      while (stream.next()) {
-      }
+      while (stream.next()) {}
     });
     EXPECT_TRUE(contains(streamed, "absurd frame length")) << streamed;
   }
@@ -859,8 +868,8 @@ Moment directMoment(const RunRequest& request, const PrecisionChoice& precision,
     for (GizmoId id : board->ballIds()) {
       const Ball<Real>& b = *board->gizmo(id).asBall();
       const Vec2<Real> p = b.positionAt(at), v = b.velocityAt(at);
-      m.balls.push_back(b.name() + " at (" + exactText(p.x) + ", " + exactText(p.y) + ") v (" + exactText(v.x) +
-                        ", " + exactText(v.y) + ")");
+      m.balls.push_back(b.name() + " at (" + exactText(p.x) + ", " + exactText(p.y) + ") v (" + exactText(v.x) + ", " +
+                        exactText(v.y) + ")");
     }
     return m;
   });
@@ -884,8 +893,8 @@ struct SeekCase {
   const char* board = "boards/spec-example.txt";
 };
 void PrintTo(const SeekCase& c, std::ostream* os) {
-  *os << c.board << " " << (c.model == MotionModel::Ballistic ? "ballistic " : "classic ") << precisionName({c.precision, 0}) << " "
-      << c.seconds << " s";
+  *os << c.board << " " << (c.model == MotionModel::Ballistic ? "ballistic " : "classic ")
+      << precisionName({c.precision, 0}) << " " << c.seconds << " s";
 }
 
 class ReplaySeek : public ::testing::TestWithParam<SeekCase> {
@@ -1005,12 +1014,12 @@ TEST(ReplayLog, DecisionStreamSeesEveryExecutedEvent) {
 
 // One line of fixtures/logs/golden.txt, which scripts/dev cross-check reads too.
 struct GoldenCase {
-  std::string file;  // in fixtures/logs/
+  std::string file;   // in fixtures/logs/
   std::string board;  // in fixtures/
   MotionModel model = MotionModel::Ballistic;
   PrecisionChoice precision;
   double seconds = 0;
-  bool keys = false;  // fixtures/keys/flippers.keys
+  bool keys = false;       // fixtures/keys/flippers.keys
   std::string recordedOn;  // "host", or the cross target whose scalar format it holds
 };
 void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.file; }
@@ -1070,8 +1079,7 @@ TEST_P(ReplayGolden, ThisBuildRecordsTheCommittedLog) {
         withRecordablePrecision(committed.precision, []<class Real>() { return scalarFormat<Real>(); });
     if (committed.header.format != here)
       EXPECT_THROW(replayLog(committed), FormatError) << "a log of another format must not replay here";
-    else
-      EXPECT_TRUE(replayLog(committed).identical);
+    else EXPECT_TRUE(replayLog(committed).identical);
     GTEST_SKIP() << g.file << " was recorded on " << g.recordedOn << " (" << committed.header.format
                  << "); scripts/dev cross-check compares its bytes there";
   }
@@ -1125,7 +1133,8 @@ TEST_P(ReplayGolden, ThisBuildRecordsTheCommittedLog) {
     // Say which decision parts them: replay the committed log with this build.
     const ReplayReport report = replayLog(committed);
     ADD_FAILURE() << "this build no longer records " << g.file << " ("
-                  << (firstDifferent ? "chunk " + std::to_string(*firstDifferent) + " differs" : "the run ends differently")
+                  << (firstDifferent ? "chunk " + std::to_string(*firstDifferent) + " differs"
+                                     : "the run ends differently")
                   << ").\nReplaying the committed log: " << describe(report)
                   << "\nIf the change is deliberate, rerun with GIZMO_UPDATE_GOLDEN=1 (fixtures/logs/README.md).";
   }

@@ -199,8 +199,7 @@ TYPED_TEST(FixedWidthCodec, InvalidControlBytesThrow) {
     for (unsigned trail = 0; trail < 16; ++trail) {
       if (lead + trail < kWidth || (lead == 15 && trail == 15)) continue;
       SCOPED_TRACE("lead " + std::to_string(lead) + " trail " + std::to_string(trail));
-      EXPECT_EQ(offsetOfFailure(withPayload(static_cast<std::uint8_t>(lead << 4 | trail), 16, 1)),
-                1u);
+      EXPECT_EQ(offsetOfFailure(withPayload(static_cast<std::uint8_t>(lead << 4 | trail), 16, 1)), 1u);
     }
   }
   // Zero bytes at either end of the middle part: the control byte should have counted them.
@@ -237,8 +236,7 @@ TYPED_TEST(FixedWidthCodec, ExactTextReadsBackToTheSameValue) {
 }
 
 TEST(ReplayScalarCodec, DoubleBytesAreIeeeLittleEndian) {
-  EXPECT_EQ(ScalarCodec<double>::toBytes(1.0),
-            (std::array<std::uint8_t, 8>{0, 0, 0, 0, 0, 0, 0xF0, 0x3F}));
+  EXPECT_EQ(ScalarCodec<double>::toBytes(1.0), (std::array<std::uint8_t, 8>{0, 0, 0, 0, 0, 0, 0xF0, 0x3F}));
   EXPECT_EQ(ScalarCodec<float>::toBytes(-2.0f), (std::array<std::uint8_t, 4>{0, 0, 0, 0xC0}));
   // x87: significand with explicit integer bit, then sign and exponent 0x3FFF.
   EXPECT_EQ(ScalarCodec<long double>::toBytes(-1.0L),
@@ -308,8 +306,7 @@ MpfrReal randomMpfr(std::mt19937_64& rng, long exponentRange) {
   if (rng() % 2) mpz_setbit(m, 0);
   if (rng() % 2) mpz_neg(m, m);
   MpfrReal x;
-  const long exponent = static_cast<long>(rng() % static_cast<std::uint64_t>(2 * exponentRange + 1)) -
-                        exponentRange;
+  const long exponent = static_cast<long>(rng() % static_cast<std::uint64_t>(2 * exponentRange + 1)) - exponentRange;
   EXPECT_EQ(mpfr_set_z_2exp(x.backend().data(), m, exponent, MPFR_RNDN), 0);
   mpz_clear(m);
   return x;
@@ -334,8 +331,8 @@ MpfrReal decode(const Bytes& bytes) {
 }
 
 std::vector<MpfrReal> mpfrSpecialValues() {
-  std::vector<MpfrReal> out = {MpfrReal(0), -MpfrReal(0), MpfrReal(1), MpfrReal(-50),
-                               MpfrReal(1) / MpfrReal(20), gizmo::piOf<MpfrReal>()};
+  std::vector<MpfrReal> out = {
+      MpfrReal(0), -MpfrReal(0), MpfrReal(1), MpfrReal(-50), MpfrReal(1) / MpfrReal(20), gizmo::piOf<MpfrReal>()};
   MpfrReal x;
   mpfr_set_inf(x.backend().data(), 1);
   out.push_back(x);
@@ -407,12 +404,12 @@ TEST(ReplayMpfrCodec, MalformedEncodingsThrow) {
       EXPECT_EQ(e.offset(), offset) << e.what();
     }
   };
-  expectFailureAt({5}, 0);                    // unknown class
-  expectFailureAt({0, 2}, 1);                 // zero with a bad sign
-  expectFailureAt({1, 0, 0, 0}, 3);           // no mantissa bytes
-  expectFailureAt({1, 0, 0, 1, 4}, 4);        // even mantissa
-  expectFailureAt({1, 0, 0, 2, 1, 0}, 4);     // zero top byte
-  expectFailureAt({1, 0, 0, 1}, 4);           // truncated mantissa
+  expectFailureAt({5}, 0);                          // unknown class
+  expectFailureAt({0, 2}, 1);                       // zero with a bad sign
+  expectFailureAt({1, 0, 0, 0}, 3);                 // no mantissa bytes
+  expectFailureAt({1, 0, 0, 1, 4}, 4);              // even mantissa
+  expectFailureAt({1, 0, 0, 2, 1, 0}, 4);           // zero top byte
+  expectFailureAt({1, 0, 0, 1}, 4);                 // truncated mantissa
   expectFailureAt({1, 0, 0, 0x81, 0x80, 0x40}, 3);  // 1 MiB + 1 bytes
   expectFailureAt({}, 0);
 

@@ -32,10 +32,10 @@ bool inCi() {
   return ci != nullptr && std::string(ci) == "true";
 }
 
-#define REQUIRE_BOX2D3()                                          \
+#define REQUIRE_BOX2D3()                                            \
   if (const std::optional<std::string> why = box2d3Unavailable()) { \
-    if (inCi()) FAIL() << *why << " (CI must have it)";           \
-    GTEST_SKIP() << *why;                                         \
+    if (inCi()) FAIL() << *why << " (CI must have it)";             \
+    GTEST_SKIP() << *why;                                           \
   }
 
 RunRequest board(const std::string& path, double seconds) {
@@ -84,7 +84,8 @@ TEST(Box2d3Scene, HoldsTheMappingsBodiesAsTheyAre) {
 // What the 2.4 bridge models, v3 models: flippers, spinners and absorbers are exported (kinematic
 // bodies at their rest angle, a sensor) with their coefficients; a spawner is refused by name.
 TEST(Box2d3Scene, OnlyASpawnerIsRefused) {
-  for (const char* path : {"box2d/flipper-hit.txt", "box2d/spinner-turning.txt", "gizmos/absorber.txt", "spec-example.txt"})
+  for (const char* path :
+       {"box2d/flipper-hit.txt", "box2d/spinner-turning.txt", "gizmos/absorber.txt", "spec-example.txt"})
     EXPECT_FALSE(box2d3CannotModel(board(path, 1).board)) << path;
   const std::optional<std::string> spawner = box2d3CannotModel(board("gizmos/spawner.txt", 1).board);
   ASSERT_TRUE(spawner);
@@ -158,7 +159,8 @@ TEST(Box2d3Runs, FastBallKeepsItsEnergyButFallsBehind) {
 // counted as capped in the report, as Box2D 2.4's are.
 TEST(Box2d3Runs, StepsBeyondTheSpeedLimitAreCounted) {
   REQUIRE_BOX2D3();
-  const StepComparison c = crosscheckV3(test::fixtureRequest("study/fast-ball-5000.txt", MotionModel::Ballistic, 0.1), 1.0 / 60);
+  const StepComparison c =
+      crosscheckV3(test::fixtureRequest("study/fast-ball-5000.txt", MotionModel::Ballistic, 0.1), 1.0 / 60);
   EXPECT_GT(c.speedCappedSteps, 0u);
   EXPECT_EQ(c.rotationCappedSteps, 0u);
 }
@@ -266,7 +268,9 @@ std::optional<double> theirHit(const Matched& m, const std::string& ball, const 
   return std::nullopt;
 }
 
-std::string label(double dt, bool bullet) { return "dt 1/" + std::to_string(std::lround(1 / dt)) + (bullet ? ", bullets" : ", no bullets"); }
+std::string label(double dt, bool bullet) {
+  return "dt 1/" + std::to_string(std::lround(1 / dt)) + (bullet ? ", bullets" : ", no bullets");
+}
 
 // Both runs' collisions, for a failure's message.
 std::string collisions(const Matched& m) {
@@ -319,7 +323,8 @@ TEST(Box2d3Runs, TurningSpinnerHitsAreMatchedWithinAStep) {
       // D leaves the turning cross as ours does: 0.1 s on it is within a ball's width of ours.
       const double after = matchOf(m, "D", "S")->first.time + 0.1;
       const std::size_t d = 1;  // the board's second ball
-      EXPECT_LT(length(interpolate(m.theirs.samples, after).positions.at(d) - interpolate(m.ours.samples, after).positions.at(d)),
+      EXPECT_LT(length(interpolate(m.theirs.samples, after).positions.at(d) -
+                       interpolate(m.ours.samples, after).positions.at(d)),
                 2 * kBallRadius)
           << label(dt, bullet);
     }
@@ -550,10 +555,12 @@ TEST(Box2d3Runs, ACaptureInTheLastStepIsInTheTrace) {
   o.dt = 1.0 / 120;
   RunRequest r = board("gizmos/absorber.txt", 1.5);
   const auto captureIn = [](const std::vector<CollisionRecord>& list) {
-    return std::find_if(list.begin(), list.end(), [](const CollisionRecord& c) { return c.other == "A"; }) != list.end();
+    return std::find_if(list.begin(), list.end(), [](const CollisionRecord& c) { return c.other == "A"; }) !=
+           list.end();
   };
   const std::vector<CollisionRecord> whole = runBox2d3(r, o).run.record.collisions;
-  const auto capture = std::find_if(whole.begin(), whole.end(), [](const CollisionRecord& c) { return c.other == "A"; });
+  const auto capture =
+      std::find_if(whole.begin(), whole.end(), [](const CollisionRecord& c) { return c.other == "A"; });
   ASSERT_NE(capture, whole.end());
   // The run ends with the step whose reply reports the capture: the one ending at or after its
   // time, or the one after it (a contact placed in the step before its own).

@@ -205,8 +205,8 @@ TEST(Box2dTimeOfImpact, SurveyNeverEarly) {
 
 TEST(Box2dCrosscheck, MatchingPairsSameBallSameGizmoNearestTime) {
   const std::vector<CollisionRecord> ours{{1.0, "B", "S", {1, 1}}, {2.0, "B", "S", {1, 1}}, {3.0, "B", "C", {5, 5}}};
-  const std::vector<CollisionRecord> box2d{{2.01, "B", "S", {1, 1}}, {1.02, "B", "S", {1, 1}}, {3.0, "B", "T", {5, 5}},
-                                           {1.03, "B", "S", {9, 9}}};
+  const std::vector<CollisionRecord> box2d{
+      {2.01, "B", "S", {1, 1}}, {1.02, "B", "S", {1, 1}}, {3.0, "B", "T", {5, 5}}, {1.03, "B", "S", {9, 9}}};
   const auto pairs = matchCollisions(ours, box2d, 0.05);
   ASSERT_EQ(pairs.size(), 2u);
   EXPECT_EQ(pairs[0], (std::pair<std::size_t, std::size_t>{0, 1}));

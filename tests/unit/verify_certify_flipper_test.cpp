@@ -141,14 +141,16 @@ const Vec2<double> kInTheWay(10.4, 13.4);
 
 TEST(CertifyFlipperByHand, NoContactBeforeTheSwingReachesTheBallIsCertified) {
   const test::HandBoard board = swingingFlipperBoard(kInTheWay);
-  const detail::LadderResult r = settle(board, eventAt(0.21, EventKind::EndOfTick), eventAt(0.21, EventKind::EndOfTick));
+  const detail::LadderResult r =
+      settle(board, eventAt(0.21, EventKind::EndOfTick), eventAt(0.21, EventKind::EndOfTick));
   EXPECT_EQ(r.outcome.verdict, detail::Verdict::Certified);
   EXPECT_EQ(r.rung, 0);
 }
 
 TEST(CertifyFlipperByHand, AnEndOfTickAfterTheStrikeIsWrong) {
   const test::HandBoard board = swingingFlipperBoard(kInTheWay);
-  const detail::LadderResult r = settle(board, eventAt(0.25, EventKind::EndOfTick), eventAt(0.25, EventKind::EndOfTick));
+  const detail::LadderResult r =
+      settle(board, eventAt(0.25, EventKind::EndOfTick), eventAt(0.25, EventKind::EndOfTick));
   ASSERT_EQ(r.outcome.verdict, detail::Verdict::Wrong);
   EXPECT_EQ(r.outcome.other.kind, EventKind::Collision);
   EXPECT_EQ(r.outcome.other.a, 1);
@@ -158,7 +160,8 @@ TEST(CertifyFlipperByHand, AnEndOfTickAfterTheStrikeIsWrong) {
 }
 
 TEST(CertifyFlipperByHand, AClaimedTipContactOutOfReachIsWrong) {
-  const test::HandBoard board = swingingFlipperBoard(Vec2<double>(12.5, 13.4));  // 3.4 from the pivot: beyond the tip's reach of 2
+  const test::HandBoard board =
+      swingingFlipperBoard(Vec2<double>(12.5, 13.4));  // 3.4 from the pivot: beyond the tip's reach of 2
   const detail::LadderResult r =
       settle(board, eventAt(0.24, EventKind::Collision, 1, 2, 3), eventAt(0.25, EventKind::EndOfTick));
   ASSERT_EQ(r.outcome.verdict, detail::Verdict::Wrong);

@@ -98,8 +98,8 @@ TEST(CertifySpinnerByHand, AnEndOfTickAfterTheStrikeIsWrong) {
 }
 
 TEST(CertifySpinnerByHand, TheStrikeOfArmZerosTipIsCertified) {
-  const detail::LadderResult r =
-      settle(turningSpinnerBoard(), eventAt(0.2452, EventKind::Collision, 1, 2, 3), eventAt(0.25, EventKind::EndOfTick));
+  const detail::LadderResult r = settle(turningSpinnerBoard(), eventAt(0.2452, EventKind::Collision, 1, 2, 3),
+                                        eventAt(0.25, EventKind::EndOfTick));
   EXPECT_EQ(r.outcome.verdict, detail::Verdict::Certified);
 }
 

@@ -13,11 +13,11 @@
 #include "gizmo/core/geometry/shapes.hpp"
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/io/board_file.hpp"
-#include "support/certify_report_text.hpp"
-#include "support/fixture_request.hpp"
 #include "gizmo/verify/certify.hpp"
 #include "gizmo/verify/certify_exact.hpp"
 #include "gizmo/verify/certify_qpoly.hpp"
+#include "support/certify_report_text.hpp"
+#include "support/fixture_request.hpp"
 #include "support/paths.hpp"
 
 namespace gizmo::verify {
@@ -146,7 +146,8 @@ std::optional<Event<MpfrReal>> firstCollisionMpfr256(const RunRequest& request) 
 }
 
 // Exactly one decision is wrong, and it is `executed` where `first` should have come first.
-const WrongDecision& expectOneWrong(const CertifyReport& r, EventKind executed, EventKind first, std::int32_t firstFeature) {
+const WrongDecision& expectOneWrong(const CertifyReport& r, EventKind executed, EventKind first,
+                                    std::int32_t firstFeature) {
   expectAccounted(r);
   EXPECT_EQ(r.wrong.size(), 1u) << describe(r);
   EXPECT_TRUE(r.ties.empty()) << describe(r);
@@ -170,7 +171,7 @@ TEST(CertifyWrong, NearTieOfTwoWallsIsFlaggedAndMpfrHitsTheFloorFirst) {
   const WrongDecision& w = expectOneWrong(r, EventKind::Collision, EventKind::Collision, 1);
   EXPECT_EQ(w.executed.feature, 2);
   EXPECT_EQ(w.time.value, d->time);
-  EXPECT_GT(w.byAtLeast.value, 0.0);  // the floor comes first by a proven margin …
+  EXPECT_GT(w.byAtLeast.value, 0.0);   // the floor comes first by a proven margin …
   EXPECT_LT(w.byAtMost.value, 1e-15);  // … below a double's resolution at t ≈ 2
   EXPECT_GT(w.rungBits, 53);           // so only MPFI could tell
   const std::optional<Event<MpfrReal>> m = firstCollisionMpfr256(request);
@@ -186,8 +187,8 @@ TEST(CertifyRun, ALandingOnAnEdgeFromBehindItsLineIsCertified) {
   RunRequest request;
   request.board.gravity = 1000;
   request.board.mu = request.board.mu2 = 0;
-  request.board.balls.push_back(BallSpec{"B", 12.522527032318791, 18.02436634557278, -105.3627631957021,
-                                         -72.25506501591016, {}});
+  request.board.balls.push_back(
+      BallSpec{"B", 12.522527032318791, 18.02436634557278, -105.3627631957021, -72.25506501591016, {}});
   request.board.gizmos.push_back(GizmoSpec{GizmoType::LeftFlipper, "F", 1, 16, 90, 2, 2, {}});
   request.maxTick = 0.2;
   request.duration = 0.12;
@@ -319,7 +320,8 @@ TEST(CertifyExact, TheGcdOfTwoPolynomialsIsTheirCommonFactor) {
 
 TEST(CertifyExact, SturmCountsDistinctRootsInAHalfOpenInterval) {
   // (s − 1)²(s − 2)(s + 1): distinct roots −1, 1, 2; the double root counts once.
-  const QPoly p = detail::product(detail::product(poly({-1, 1}), poly({-1, 1})), detail::product(poly({-2, 1}), poly({1, 1})));
+  const QPoly p =
+      detail::product(detail::product(poly({-1, 1}), poly({-1, 1})), detail::product(poly({-2, 1}), poly({1, 1})));
   const detail::SturmChain chain(p);
   EXPECT_EQ(chain.rootsIn(Rational(-3), Rational(3)), 3);
   EXPECT_EQ(chain.rootsIn(Rational(0), Rational(3)), 2);
@@ -362,7 +364,8 @@ TEST(CertifyExact, RootsTheIntervalsCannotPartAreOrderedExactly) {
   detail::RungOutcome undecided;
   undecided.ownLo = 1.9;
   undecided.ownHi = 1.96;
-  undecided.overlaps.push_back(detail::Overlap{detail::EventKey{EventKind::Collision, 0, 1, 1}, false, true, true, 1.9, 1.96});
+  undecided.overlaps.push_back(
+      detail::Overlap{detail::EventKey{EventKind::Collision, 0, 1, 1}, false, true, true, 1.9, 1.96});
   EXPECT_FALSE(detail::settleExactly(layout, snap, in, undecided, false));  // distinct: no tie
   const std::optional<detail::RungOutcome> exact = detail::settleExactly(layout, snap, in, undecided, true);
   ASSERT_TRUE(exact);

@@ -184,35 +184,43 @@ INSTANTIATE_TEST_SUITE_P(
         Damage{kHeader + R"({"t":0.01,"balls":{"B":{"x":10,"y":10.5,"vx":20,"vy":0}}})"
                          "\n",
                R"(t.jsonl:2: error: the first step's "t" is 0.01, not 0)"},
-        Damage{kHeader + kStart + R"({"t":0,"balls":{"B":{"x":10,"y":10.5,"vx":20,"vy":0}}})"
-                                  "\n",
-               R"(t.jsonl:3: error: "t" 0 is not after the step before, 0)"},
-        Damage{kHeader + kStart + R"({"t":0.01,"balls":{}})"
-                                  "\n",
-               R"(t.jsonl:3: error: "balls" has no ball 'B' (every ball of the board, each step))"},
-        Damage{kHeader + kStart + R"({"t":0.01,"balls":{"B":{"x":10,"y":10.5,"vx":20,"vy":0},"C":{}}})"
-                                  "\n",
-               R"(t.jsonl:3: error: "balls" names 'C', which is not a ball of the board)"},
-        Damage{kHeader + kStart + R"({"t":0.01,"balls":{"B":{"x":"ten","y":10.5,"vx":20,"vy":0}}})"
-                                  "\n",
-               R"(t.jsonl:3: error: ball 'B': "x" is not a number)"},
-        Damage{kHeader + kStart + R"({"t":0.01,"balls":{"B":{"x":10,"y":10.5,"vx":20,"vy":0}},"spin":1})"
-                                  "\n",
-               R"(t.jsonl:3: error: the step has an unknown key "spin")"},
         Damage{kHeader + kStart +
-                   R"({"t":0.01,"balls":{"B":{"x":10,"y":10.5,"vx":20,"vy":0}},"contacts":[{"t":0.005,"ball":"B","other":"Q","x":1,"y":1}]})"
+                   R"({"t":0,"balls":{"B":{"x":10,"y":10.5,"vx":20,"vy":0}}})"
                    "\n",
-               "t.jsonl:3: error: a contact names 'Q', which is not a gizmo, a ball or OuterWalls"},
-        Damage{kHeader + kStart + R"({"t":0.01,"balls":{"B":{"x":10.2,"y":10.5,"vx":20,"vy":0}}})"
-                                  "\n",
+               R"(t.jsonl:3: error: "t" 0 is not after the step before, 0)"},
+        Damage{kHeader + kStart +
+                   R"({"t":0.01,"balls":{}})"
+                   "\n",
+               R"(t.jsonl:3: error: "balls" has no ball 'B' (every ball of the board, each step))"},
+        Damage{kHeader + kStart +
+                   R"({"t":0.01,"balls":{"B":{"x":10,"y":10.5,"vx":20,"vy":0},"C":{}}})"
+                   "\n",
+               R"(t.jsonl:3: error: "balls" names 'C', which is not a ball of the board)"},
+        Damage{kHeader + kStart +
+                   R"({"t":0.01,"balls":{"B":{"x":"ten","y":10.5,"vx":20,"vy":0}}})"
+                   "\n",
+               R"(t.jsonl:3: error: ball 'B': "x" is not a number)"},
+        Damage{kHeader + kStart +
+                   R"({"t":0.01,"balls":{"B":{"x":10,"y":10.5,"vx":20,"vy":0}},"spin":1})"
+                   "\n",
+               R"(t.jsonl:3: error: the step has an unknown key "spin")"},
+        Damage{
+            kHeader + kStart +
+                R"({"t":0.01,"balls":{"B":{"x":10,"y":10.5,"vx":20,"vy":0}},"contacts":[{"t":0.005,"ball":"B","other":"Q","x":1,"y":1}]})"
+                "\n",
+            "t.jsonl:3: error: a contact names 'Q', which is not a gizmo, a ball or OuterWalls"},
+        Damage{kHeader + kStart +
+                   R"({"t":0.01,"balls":{"B":{"x":10.2,"y":10.5,"vx":20,"vy":0}}})"
+                   "\n",
                "t.jsonl:3: error: the trace ends at 0.01 s, before the end of the comparison, 0.02 s (--time)"}));
 
 // A trace that says it reports no contacts may not list any.
 TEST(EngineTrace, ContactsWhereTheHeaderPromisedNone) {
   std::istringstream in(R"({"format":"gizmo-trace","version":1,"engine":"e","contacts":false})"
                         "\n" +
-                        kStart + R"({"t":0.05,"balls":{"B":{"x":11,"y":10.5,"vx":20,"vy":0}},"contacts":[]})"
-                                 "\n");
+                        kStart +
+                        R"({"t":0.05,"balls":{"B":{"x":11,"y":10.5,"vx":20,"vy":0}},"contacts":[]})"
+                        "\n");
   EXPECT_THROW(
       {
         try {

@@ -130,7 +130,8 @@ TEST(Expectations, RestsAtMostFailsForABallLyingStillOutsideAnAbsorber) {
   ASSERT_EQ(f.size(), 1u);
   EXPECT_GT(f[0].time, 1.0);
   EXPECT_LE(f[0].time, 1.05);  // seen at the first tick boundary after a second of rest
-  EXPECT_NE(f[0].message.find("ball B has rested at (10.5, 19.75) outside an absorber since t = 0 s"), std::string::npos)
+  EXPECT_NE(f[0].message.find("ball B has rested at (10.5, 19.75) outside an absorber since t = 0 s"),
+            std::string::npos)
       << f[0].message;
   // A ball captured by an absorber rests inside it, which the expectation allows; so does a ball
   // that keeps moving (no gravity, bouncing between the walls).

@@ -147,15 +147,16 @@ void checkEnclosure(const char* name, std::function<double(const I&)> lower, std
 }
 
 TEST(VerifyInterval, DoubleIntervalsEncloseEveryMemberResult) {
-  checkEnclosure<Interval>("Interval", [](const Interval& i) { return i.lower(); },
-                           [](const Interval& i) { return i.upper(); });
+  checkEnclosure<Interval>(
+      "Interval", [](const Interval& i) { return i.lower(); }, [](const Interval& i) { return i.upper(); });
 }
 
 TEST(VerifyInterval, MpfiIntervalsEncloseEveryMemberResult) {
   for (long bits : {128L, 1024L}) {
     MpfiInterval::setWorkingBits(bits);
-    checkEnclosure<MpfiInterval>("MpfiInterval", [](const MpfiInterval& i) { return lowerDouble(i); },
-                                 [](const MpfiInterval& i) { return upperDouble(i); });
+    checkEnclosure<MpfiInterval>(
+        "MpfiInterval", [](const MpfiInterval& i) { return lowerDouble(i); },
+        [](const MpfiInterval& i) { return upperDouble(i); });
   }
 }
 
@@ -248,20 +249,22 @@ void checkTrigOfPoints(const char* name, std::function<double(const I&)> lower, 
 }
 
 TEST(VerifyIntervalTrig, DoubleSinAndCosOfPointsEncloseMpfr) {
-  checkTrigOfPoints<Interval>("Interval", [](const Interval& i) { return i.lower(); },
-                              [](const Interval& i) { return i.upper(); });
+  checkTrigOfPoints<Interval>(
+      "Interval", [](const Interval& i) { return i.lower(); }, [](const Interval& i) { return i.upper(); });
 }
 
 TEST(VerifyIntervalTrig, MpfiSinAndCosOfPointsEncloseMpfr) {
   MpfiInterval::setWorkingBits(128);
-  checkTrigOfPoints<MpfiInterval>("MpfiInterval", [](const MpfiInterval& i) { return lowerDouble(i); },
-                                  [](const MpfiInterval& i) { return upperDouble(i); });
+  checkTrigOfPoints<MpfiInterval>(
+      "MpfiInterval", [](const MpfiInterval& i) { return lowerDouble(i); },
+      [](const MpfiInterval& i) { return upperDouble(i); });
 }
 
 // Over [a, b]: the values at the ends, at members in between, and at the doubles nearest every
 // multiple of π/2 inside (where sin or cos is ±1 to within 1e-32) all lie in the result.
 template <class I>
-void checkTrigOfIntervals(const char* name, std::function<double(const I&)> lower, std::function<double(const I&)> upper) {
+void checkTrigOfIntervals(const char* name, std::function<double(const I&)> lower,
+                          std::function<double(const I&)> upper) {
   std::mt19937_64 rng(kSeed + 3);
   std::uniform_real_distribution<double> start(-40.0, 40.0), unit(0.0, 1.0);
   const double widths[] = {1e-12, 1e-3, 0.3, 1.6, 3.2, 7.0};
@@ -291,27 +294,28 @@ void checkTrigOfIntervals(const char* name, std::function<double(const I&)> lowe
 }
 
 TEST(VerifyIntervalTrig, DoubleSinAndCosOfIntervalsEncloseEveryMember) {
-  checkTrigOfIntervals<Interval>("Interval", [](const Interval& i) { return i.lower(); },
-                                 [](const Interval& i) { return i.upper(); });
+  checkTrigOfIntervals<Interval>(
+      "Interval", [](const Interval& i) { return i.lower(); }, [](const Interval& i) { return i.upper(); });
 }
 
 TEST(VerifyIntervalTrig, MpfiSinAndCosOfIntervalsEncloseEveryMember) {
   MpfiInterval::setWorkingBits(128);
-  checkTrigOfIntervals<MpfiInterval>("MpfiInterval", [](const MpfiInterval& i) { return lowerDouble(i); },
-                                     [](const MpfiInterval& i) { return upperDouble(i); });
+  checkTrigOfIntervals<MpfiInterval>(
+      "MpfiInterval", [](const MpfiInterval& i) { return lowerDouble(i); },
+      [](const MpfiInterval& i) { return upperDouble(i); });
 }
 
 TEST(VerifyIntervalTrig, AnIntervalHoldingAnExtremeReachesItExactly) {
   UpwardRounding upward;
-  EXPECT_EQ(sin(Interval(1.5, 1.6)).upper(), 1.0);    // π/2 inside
+  EXPECT_EQ(sin(Interval(1.5, 1.6)).upper(), 1.0);     // π/2 inside
   EXPECT_LT(sin(Interval(1.5, 1.6)).lower(), 0.9975);  // sin 1.5 = 0.99749…
-  EXPECT_EQ(cos(Interval(3.0, 3.3)).lower(), -1.0);   // π inside
+  EXPECT_EQ(cos(Interval(3.0, 3.3)).lower(), -1.0);    // π inside
   EXPECT_EQ(cos(Interval(-0.1, 0.1)).upper(), 1.0);
-  const Interval turn = sin(Interval(0.0, 7.0));      // more than a turn: everything
+  const Interval turn = sin(Interval(0.0, 7.0));  // more than a turn: everything
   EXPECT_EQ(turn.lower(), -1.0);
   EXPECT_EQ(turn.upper(), 1.0);
-  const Interval away = sin(Interval(0.2, 1.4));       // monotone: no extreme added
-  EXPECT_LT(away.upper(), 0.9855);                     // sin 1.4 = 0.98545…
+  const Interval away = sin(Interval(0.2, 1.4));  // monotone: no extreme added
+  EXPECT_LT(away.upper(), 0.9855);                // sin 1.4 = 0.98545…
 }
 
 TEST(VerifyIntervalTrig, PiLiesStrictlyInsideItsEnclosures) {

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "gizmo/io/board_file.hpp"
-#include "support/fixture_request.hpp"
 #include "gizmo/verify/ladder.hpp"
 #include "gizmo/verify/wide_value.hpp"
+#include "support/fixture_request.hpp"
 
 namespace gizmo::verify {
 namespace {

@@ -31,18 +31,21 @@ std::string aggregate(const std::string& name, const std::string& kind, double r
                       const std::string& more = "") {
   return "{\"name\": \"" + name + "_" + kind + "\", \"run_name\": \"" + name +
          "\", \"run_type\": \"aggregate\", \"repetitions\": 3, \"threads\": 1, \"aggregate_name\": \"" + kind +
-         "\", \"iterations\": 3, \"real_time\": " + std::to_string(realTime) + ", \"cpu_time\": " +
-         std::to_string(realTime) + ", \"time_unit\": \"" + unit + "\"" + (more.empty() ? "" : ", " + more) + "}";
+         "\", \"iterations\": 3, \"real_time\": " + std::to_string(realTime) +
+         ", \"cpu_time\": " + std::to_string(realTime) + ", \"time_unit\": \"" + unit + "\"" +
+         (more.empty() ? "" : ", " + more) + "}";
 }
 
 std::string benchJson(const std::vector<std::string>& entries) {
-  std::string text = "{\n\"context\": {\"date\": \"2026-01-05T10:00:00+00:00\", \"host_name\": \"h\", \"num_cpus\": 2},\n"
-                     "\"benchmarks\": [\n";
+  std::string text =
+      "{\n\"context\": {\"date\": \"2026-01-05T10:00:00+00:00\", \"host_name\": \"h\", \"num_cpus\": 2},\n"
+      "\"benchmarks\": [\n";
   for (std::size_t i = 0; i < entries.size(); ++i) text += (i ? ",\n" : "") + entries[i];
   return text + "\n]\n}\n";
 }
 
-const KernelPoint& pointOf(const KernelFigures& k, KernelChart chart, const std::string& category, const std::string& series) {
+const KernelPoint& pointOf(const KernelFigures& k, KernelChart chart, const std::string& category,
+                           const std::string& series) {
   for (const KernelPoint& p : k.points)
     if (p.chart == chart && p.category == category && p.series == series) return p;
   throw std::runtime_error("no point " + category + " / " + series);
@@ -86,10 +89,11 @@ TEST(StudyBench, AggregatesAreTakenAsGoogleBenchmarkComputedThem) {
 
 TEST(StudyBench, WithoutAggregatesTheRunsGiveMeanAndSampleStddev) {
   const std::string name = "BM_SpecExampleClassic";
-  const BenchResults r = parseBenchJson(
-      benchJson({entry(name, "iteration", 1, "ms", "\"events/run\": 380"), entry(name, "iteration", 3, "ms", "\"events/run\": 380"),
-                 entry("BM_Once", "iteration", 2, "s"), entry("BM_Tiny", "iteration", 7, "ns")}),
-      "k.json");
+  const BenchResults r =
+      parseBenchJson(benchJson({entry(name, "iteration", 1, "ms", "\"events/run\": 380"),
+                                entry(name, "iteration", 3, "ms", "\"events/run\": 380"),
+                                entry("BM_Once", "iteration", 2, "s"), entry("BM_Tiny", "iteration", 7, "ns")}),
+                     "k.json");
   ASSERT_EQ(r.figures.size(), 3u);
   const BenchFigure* f = r.find(name);
   ASSERT_NE(f, nullptr);
@@ -110,10 +114,10 @@ TEST(StudyBench, WithoutAggregatesTheRunsGiveMeanAndSampleStddev) {
 }
 
 TEST(StudyBench, ABenchmarkThatReportedAnErrorIsListedNotCharted) {
-  const BenchResults r = parseBenchJson(
-      benchJson({entry("BM_Good", "iteration", 5, "ns"),
-                 "{\"name\": \"BM_Bad\", \"run_type\": \"iteration\", \"error_occurred\": true, \"error_message\": \"no contact\"}"}),
-      "k.json");
+  const BenchResults r = parseBenchJson(benchJson({entry("BM_Good", "iteration", 5, "ns"),
+                                                   "{\"name\": \"BM_Bad\", \"run_type\": \"iteration\", "
+                                                   "\"error_occurred\": true, \"error_message\": \"no contact\"}"}),
+                                        "k.json");
   ASSERT_EQ(r.figures.size(), 1u);
   EXPECT_EQ(r.figures[0].name, "BM_Good");
   ASSERT_EQ(r.sources[0].failed.size(), 1u);
@@ -130,20 +134,23 @@ TEST(StudyBench, BadFilesAreRefusedWithTheFileAndWhatIsWrong) {
   EXPECT_NE(refusal("{\"benchmarks\": {}}").find("no \"benchmarks\" array"), std::string::npos);
   EXPECT_NE(refusal(benchJson({})).find("k.json: no benchmark with a figure in it"), std::string::npos);
   EXPECT_NE(refusal(benchJson({"3"})).find("k.json: benchmarks[0]: is not an object"), std::string::npos);
-  EXPECT_NE(refusal(benchJson({"{\"run_type\": \"iteration\"}"})).find("benchmarks[0]: has no \"name\""), std::string::npos);
+  EXPECT_NE(refusal(benchJson({"{\"run_type\": \"iteration\"}"})).find("benchmarks[0]: has no \"name\""),
+            std::string::npos);
   const std::string good = entry("BM_A", "iteration", 5, "ns");
   EXPECT_NE(refusal(benchJson({good, entry("BM_B", "iteration", 5, "minutes")}))
                 .find("k.json: benchmarks[1] (BM_B): unknown time_unit 'minutes'"),
             std::string::npos);
   EXPECT_NE(refusal(benchJson({entry("BM_B", "sometimes", 5, "ns")})).find("(BM_B): unknown run_type 'sometimes'"),
             std::string::npos);
-  EXPECT_NE(refusal(benchJson({"{\"name\": \"BM_C\", \"run_type\": \"iteration\", \"cpu_time\": 1, \"time_unit\": \"ns\"}"}))
-                .find("(BM_C): has no \"real_time\""),
-            std::string::npos);
-  EXPECT_NE(refusal(benchJson({"{\"name\": \"BM_C\", \"run_type\": \"iteration\", \"real_time\": \"fast\", \"cpu_time\": 1, "
-                               "\"time_unit\": \"ns\"}"}))
-                .find("(BM_C): \"real_time\" is not a number"),
-            std::string::npos);
+  EXPECT_NE(
+      refusal(benchJson({"{\"name\": \"BM_C\", \"run_type\": \"iteration\", \"cpu_time\": 1, \"time_unit\": \"ns\"}"}))
+          .find("(BM_C): has no \"real_time\""),
+      std::string::npos);
+  EXPECT_NE(
+      refusal(benchJson({"{\"name\": \"BM_C\", \"run_type\": \"iteration\", \"real_time\": \"fast\", \"cpu_time\": 1, "
+                         "\"time_unit\": \"ns\"}"}))
+          .find("(BM_C): \"real_time\" is not a number"),
+      std::string::npos);
   EXPECT_NE(refusal(benchJson({entry("BM_D", "iteration", -5, "ns")})).find("(BM_D): \"real_time\" is not a time"),
             std::string::npos);
   EXPECT_NE(refusal(benchJson({"{\"name\": \"BM_E\", \"run_type\": \"aggregate\", \"real_time\": 1}"}))
@@ -224,12 +231,14 @@ TEST(StudyKernels, EventLoopRecordingAndCertificationAreReadAsRatios) {
   const BenchResults r = parseBenchJson(
       benchJson({entry("BM_SpecExampleBallistic", "iteration", 1, "ms", specRates),
                  entry("BM_SpecExampleBallisticObserved", "iteration", 1.1, "ms", specRates),
-                 entry("BM_CrowdedClassic", "iteration", 30, "ms", "\"events/run\": 10000, \"events/s\": 2e5, \"board_s/s\": 200"),
+                 entry("BM_CrowdedClassic", "iteration", 30, "ms",
+                       "\"events/run\": 10000, \"events/s\": 2e5, \"board_s/s\": 200"),
                  entry("BM_CrowdedBallistic", "iteration", 20, "ms", "\"events/run\": 90000"),
                  entry("BM_SpecExample600sBallistic", "iteration", 600, "ms",
                        "\"events/run\": 300000, \"events/s\": 5e5, \"board_s/s\": 1000"),
                  entry("BM_SpecUnrecorded", "iteration", 2, "ms"), entry("BM_SpecRecordedToFile", "iteration", 3, "ms"),
-                 entry("BM_SpecReplayed", "iteration", 5, "ms"), entry("BM_CrowdedRecordedToFile", "iteration", 9, "ms"),
+                 entry("BM_SpecReplayed", "iteration", 5, "ms"),
+                 entry("BM_CrowdedRecordedToFile", "iteration", 9, "ms"),
                  aggregate("BM_CertifyRatio/ballistic:0", "mean", 10, "ms", "\"ratio\": 2.5"),
                  aggregate("BM_CertifyRatio/ballistic:0", "stddev", 1, "ms", "\"ratio\": 0.1"),
                  entry("BM_SpecExampleRun60s/ballistic:1", "iteration", 4, "ms"),
@@ -272,10 +281,11 @@ TEST(StudyKernels, EventLoopRecordingAndCertificationAreReadAsRatios) {
 }
 
 TEST(StudyKernels, TheTablesCarryThePointsAndThePageHasKernelsOnlyWithFigures) {
-  const BenchResults r = parseBenchJson(benchJson({entry("BM_BallTimeOfImpact<double>/ballistic:0", "iteration", 200, "ns"),
-                                                   entry("BM_BallTimeOfImpact<float>/ballistic:0", "iteration", 150, "ns"),
-                                                   entry("BM_BallTimeOfImpact<mpfr:256>/ballistic:0", "iteration", 25, "us")}),
-                                        "k.json");
+  const BenchResults r =
+      parseBenchJson(benchJson({entry("BM_BallTimeOfImpact<double>/ballistic:0", "iteration", 200, "ns"),
+                                entry("BM_BallTimeOfImpact<float>/ballistic:0", "iteration", 150, "ns"),
+                                entry("BM_BallTimeOfImpact<mpfr:256>/ballistic:0", "iteration", 25, "us")}),
+                     "k.json");
   const KernelFigures k = kernelFigures(r);
   const std::string csv = kernelsCsv(k);
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
@@ -295,7 +305,7 @@ TEST(StudyKernels, TheTablesCarryThePointsAndThePageHasKernelsOnlyWithFigures) {
   EXPECT_NE(page.find("<h2 id=\"kernels\">Kernels</h2>"), std::string::npos);
   EXPECT_NE(page.find("charts/kernels-time-of-impact.svg"), std::string::npos);
   EXPECT_NE(page.find("150 ns (×0.75)"), std::string::npos);
-  EXPECT_NE(page.find("25 µs (×125)"), std::string::npos);  // times in a readable unit
+  EXPECT_NE(page.find("25 µs (×125)"), std::string::npos);                  // times in a readable unit
   EXPECT_EQ(page.find("charts/kernels-recording.svg"), std::string::npos);  // no recording figures
 }
 

@@ -57,7 +57,8 @@ TEST(StudySuite, BuiltInSuiteHasMainAndStressScenesAndAQuickSubset) {
   }
   EXPECT_NO_THROW(checkStudy(full, StudyPlan::full()));
   // The pinched ball's key script came along with it.
-  const auto pinched = std::find_if(full.begin(), full.end(), [](const StudyScene& s) { return s.name == "pinched-ball"; });
+  const auto pinched =
+      std::find_if(full.begin(), full.end(), [](const StudyScene& s) { return s.name == "pinched-ball"; });
   ASSERT_NE(pinched, full.end());
   EXPECT_FALSE(pinched->request.keys.empty());
 }
@@ -74,7 +75,8 @@ TEST(StudySuite, BadManifestsAreRefusedWithTheirLine) {
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
     }
   };
-  refuse("scene a ball.txt 1 0 0.1 main ok\nscene a ball.txt 1 0 0.1 main twice\n", "suite.txt:2: scene 'a' is named twice");
+  refuse("scene a ball.txt 1 0 0.1 main ok\nscene a ball.txt 1 0 0.1 main twice\n",
+         "suite.txt:2: scene 'a' is named twice");
   refuse("scene a ball.txt x 0 0.1 main\n", "SECONDS 'x' is not a number");
   refuse("scene a ball.txt 1 2 0.1 main\n", "QUICK_SECONDS is longer than SECONDS");
   refuse("scene a ball.txt 1 0 0.1 sometimes\n", "the kind must be main or stress");
@@ -104,7 +106,8 @@ TEST(StudyFindings, SpreadIsMedianMinMax) {
 }
 
 TEST(StudyFindings, ParetoFrontKeepsWhatNothingBeats) {
-  const std::vector<ChartPoint> points{{0, 1.0, 1e-3}, {1, 2.0, 1e-3}, {2, 0.5, 1e-1}, {3, 4.0, 1e-9}, {4, 3.0, 1e-2}, {5, 1.0, 1e-3}};
+  const std::vector<ChartPoint> points{{0, 1.0, 1e-3}, {1, 2.0, 1e-3}, {2, 0.5, 1e-1},
+                                       {3, 4.0, 1e-9}, {4, 3.0, 1e-2}, {5, 1.0, 1e-3}};
   const std::vector<ChartPoint> front = paretoFront(points);
   std::vector<std::size_t> onFront;
   for (const ChartPoint& p : front) onFront.push_back(p.result);

@@ -50,7 +50,7 @@ RunRequest specLike() {
   r.board.balls.push_back(ballAt("B1", 5.5, 11.74, 3, -2));
   r.board.balls.push_back(ballAt("B2", 12, 4));
   r.board.balls.push_back(ballAt("B3", 10.5, 19.5));  // at rest in the absorber: captured, and must not be kicked
-  r.board.balls.push_back(ballAt("B4", 15, 10));       // two balls 0.02 L apart: each may move, not into the other
+  r.board.balls.push_back(ballAt("B4", 15, 10));      // two balls 0.02 L apart: each may move, not into the other
   r.board.balls.push_back(ballAt("B5", 15.52, 10));
   r.keys = {{1.0, 65, KeyDirection::Down}, {2.0, 65, KeyDirection::Up}};
   r.duration = 5;
@@ -101,7 +101,8 @@ TEST(Variations, ASwitchedOffVariationNeverHappens) {
   VariationOptions none;
   none.keyPressesPer10s = none.position = none.speed = none.angle = none.kick = none.gravity = none.friction = 0;
   none.model = none.maxTick = false;
-  for (std::uint64_t seed = 1; seed <= 100; ++seed) EXPECT_TRUE(randomDeparture(specLike(), seed, none).empty()) << seed;
+  for (std::uint64_t seed = 1; seed <= 100; ++seed)
+    EXPECT_TRUE(randomDeparture(specLike(), seed, none).empty()) << seed;
   VariationOptions onlyKeys = none;
   onlyKeys.keyPressesPer10s = 4;
   for (std::uint64_t seed = 1; seed <= 100; ++seed) {
@@ -130,7 +131,8 @@ TEST(Variations, TheScalarVariesOnlyWhenAsked) {
   std::uint64_t k = 1;
   while (!source.departure(3, k).otherScalar) ++k;
   EXPECT_EQ(source.make(3, k).scalar, Precision::LongDouble);
-  EXPECT_NE(describeDeparture(specLike(), source.departure(3, k)).find("in long double (double given)"), std::string::npos);
+  EXPECT_NE(describeDeparture(specLike(), source.departure(3, k)).find("in long double (double given)"),
+            std::string::npos);
 }
 
 TEST(Variations, ShrinkingGoesBackToTheRunGivenWhenEverythingFails) {
@@ -139,7 +141,8 @@ TEST(Variations, ShrinkingGoesBackToTheRunGivenWhenEverythingFails) {
   everything.scalar = true;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     const Departure d = randomDeparture(base, seed, everything);
-    const ShrunkDeparture s = shrinkDeparture(base, d, [](const RunRequest&, const Departure&) { return true; }, 10000, 1.0);
+    const ShrunkDeparture s = shrinkDeparture(
+        base, d, [](const RunRequest&, const Departure&) { return true; }, 10000, 1.0);
     Departure back = s.departure;
     ASSERT_TRUE(back.duration.has_value());  // cut as short as allowed, and no shorter
     EXPECT_GE(*back.duration, 1.0);
@@ -158,7 +161,8 @@ TEST(Variations, TheDepartureIsSaidInWords) {
   d.gravityFactor = 1.1;
   d.otherModel = true;
   EXPECT_EQ(describeDeparture(base, d),
-            "key 65 down at 1.25 s, up at 1.4 s; key 65 up at 2 s left out; B1 launched 0.8 % faster; gravity 27.5 L/s² (25 on "
+            "key 65 down at 1.25 s, up at 1.4 s; key 65 up at 2 s left out; B1 launched 0.8 % faster; gravity 27.5 "
+            "L/s² (25 on "
             "the board); the classic model (ballistic given)");
 }
 
@@ -178,7 +182,8 @@ TEST(Variations, APlantedWindowOfKeyTimingIsFoundAndShrunkToOnePress) {
   c.seed = 1;
   const CampaignResult r = runCampaign(c);
   ASSERT_GE(failureCount(r), 1u);
-  const std::regex onePress("key 32 down at [0-9.]+ s(, up at [0-9.]+ s| and held)(; the run cut to [0-9.]+ s \\(1\\.5 s given\\))?");
+  const std::regex onePress(
+      "key 32 down at [0-9.]+ s(, up at [0-9.]+ s| and held)(; the run cut to [0-9.]+ s \\(1\\.5 s given\\))?");
   for (const CaseOutcome& o : r.outcomes) {
     if (o.holds) continue;
     EXPECT_TRUE(std::regex_match(o.departure, onePress)) << "case " << o.index << ": " << o.departure;
@@ -218,7 +223,8 @@ TEST(Variations, EveryFixtureBoardHoldsEveryPropertyOverVariations) {
     c.seed = 41;
     c.shrinkBudget = 0;  // a failure is reported as found, not shrunk
     const CampaignResult r = runCampaign(c);
-    for (const CaseOutcome& o : r.outcomes) EXPECT_TRUE(o.holds) << path << " case " << o.index << " " << o.property << ": " << o.message;
+    for (const CaseOutcome& o : r.outcomes)
+      EXPECT_TRUE(o.holds) << path << " case " << o.index << " " << o.property << ": " << o.message;
     ++boards;
   }
   EXPECT_GE(boards, 70);

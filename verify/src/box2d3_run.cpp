@@ -98,7 +98,8 @@ class Box2d3Engine final : public SteppedEngine {
       ops_.push_back(Json::array({"turn", body, omega}));
     }
     turns_.clear();
-    for (const EngineBall& b : balls_) out.speedCapped = out.speedCapped || (!b.held && length(b.velocity) > kBox2d3MaxSpeed);
+    for (const EngineBall& b : balls_)
+      out.speedCapped = out.speedCapped || (!b.held && length(b.velocity) > kBox2d3MaxSpeed);
     process_.send(Json{{"t0", t0}, {"ops", std::move(ops_)}}.dump());
     ops_ = Json::array();
     const Json r = reply();
@@ -112,14 +113,17 @@ class Box2d3Engine final : public SteppedEngine {
   }
 
  private:
-  [[noreturn]] static void bad(const std::string& what) { throw std::runtime_error("the Box2D v3 program's reply: " + what); }
+  [[noreturn]] static void bad(const std::string& what) {
+    throw std::runtime_error("the Box2D v3 program's reply: " + what);
+  }
 
   EngineContact contactOf(const Json& c) const {
     try {
       const std::string kind = c[0].get<std::string>();
       EngineContact contact;
-      contact.kind = kind == "hit" ? EngineContact::Kind::Hit : kind == "enter" ? EngineContact::Kind::Enter
-                                                                                : EngineContact::Kind::Exit;
+      contact.kind = kind == "hit"     ? EngineContact::Kind::Hit
+                     : kind == "enter" ? EngineContact::Kind::Enter
+                                       : EngineContact::Kind::Exit;
       contact.ball = c[1].get<std::size_t>();
       contact.otherIsBall = c[2].get<int>() != 0;
       contact.other = c[3].get<std::size_t>();
@@ -145,7 +149,8 @@ class Box2d3Engine final : public SteppedEngine {
   void readState(const Json& r) {
     try {
       const Json& balls = r.at("balls");
-      if (balls.size() != balls_.size()) bad("it has " + std::to_string(balls.size()) + " balls, the board " + std::to_string(balls_.size()));
+      if (balls.size() != balls_.size())
+        bad("it has " + std::to_string(balls.size()) + " balls, the board " + std::to_string(balls_.size()));
       for (std::size_t i = 0; i < balls_.size(); ++i) {
         const Json& b = balls[i];
         balls_[i] = EngineBall{Vec2<double>(b.at(0).get<double>(), b.at(1).get<double>()),

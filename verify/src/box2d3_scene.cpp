@@ -18,12 +18,9 @@ Json partJson(const Box2dPart& part) {
   Json points = Json::array();
   for (const Vec2<double>& p : part.points) points.push_back(point(p));
   switch (part.kind) {
-    case Box2dPart::Kind::Polygon:
-      return {{"kind", "polygon"}, {"points", points}, {"radius", part.radius}};
-    case Box2dPart::Kind::Edge:
-      return {{"kind", "edge"}, {"points", points}, {"radius", part.radius}};
-    case Box2dPart::Kind::Circle:
-      break;
+    case Box2dPart::Kind::Polygon: return {{"kind", "polygon"}, {"points", points}, {"radius", part.radius}};
+    case Box2dPart::Kind::Edge: return {{"kind", "edge"}, {"points", points}, {"radius", part.radius}};
+    case Box2dPart::Kind::Circle: break;
   }
   return {{"kind", "circle"}, {"centre", point(part.centre)}, {"radius", part.radius}};
 }
@@ -31,8 +28,12 @@ Json partJson(const Box2dPart& part) {
 Json bodyJson(const Box2dBody& body) {
   Json parts = Json::array();
   for (const Box2dPart& part : body.parts) parts.push_back(partJson(part));
-  return {{"name", body.name},          {"kinematic", body.kinematic}, {"sensor", body.sensor},
-          {"restitution", body.restitution}, {"origin", point(body.origin)}, {"angle", body.angle},
+  return {{"name", body.name},
+          {"kinematic", body.kinematic},
+          {"sensor", body.sensor},
+          {"restitution", body.restitution},
+          {"origin", point(body.origin)},
+          {"angle", body.angle},
           {"parts", parts}};
 }
 

@@ -17,7 +17,8 @@ namespace {
 // Our run's collisions and samples, seen through the board's one observer seam.
 class OurRecorder final : public BoardObserver<double> {
  public:
-  OurRecorder(const GameBoard<double>& board, const BoardSpec& spec, RunRecord& record) : board_(board), record_(record) {
+  OurRecorder(const GameBoard<double>& board, const BoardSpec& spec, RunRecord& record)
+      : board_(board), record_(record) {
     for (const BallSpec& b : spec.balls) balls_.push_back(*board.find(b.name));
     tickBoundary(0);
   }
@@ -61,7 +62,8 @@ TrajectorySample interpolate(const std::vector<TrajectorySample>& samples, doubl
   const double f = std::clamp((t - a.time) / (b.time - a.time), 0.0, 1.0);
   TrajectorySample s;
   s.time = t;
-  for (std::size_t i = 0; i < a.positions.size(); ++i) s.positions.push_back(a.positions[i] + f * (b.positions[i] - a.positions[i]));
+  for (std::size_t i = 0; i < a.positions.size(); ++i)
+    s.positions.push_back(a.positions[i] + f * (b.positions[i] - a.positions[i]));
   s.energy = a.energy + f * (b.energy - a.energy);
   return s;
 }
@@ -103,7 +105,8 @@ void compareCollisions(const RunRecord& ours, const RunRecord& theirs, StepCompa
   std::size_t i = 0, j = 0;
   while (i < oursMatched.size() && !missed(ours.collisions, oursMatched, i)) ++i;
   while (j < theirsMatched.size() && !missed(theirs.collisions, theirsMatched, j)) ++j;
-  const bool ourFirst = i < oursMatched.size() && (j == theirsMatched.size() || ours.collisions[i].time <= theirs.collisions[j].time);
+  const bool ourFirst =
+      i < oursMatched.size() && (j == theirsMatched.size() || ours.collisions[i].time <= theirs.collisions[j].time);
   if (ourFirst) out.firstUnmatched = UnmatchedCollision{"ours", ours.collisions[i]};
   else if (j < theirsMatched.size()) out.firstUnmatched = UnmatchedCollision{"theirs", theirs.collisions[j]};
 }
@@ -179,11 +182,13 @@ void checkPartings(const RunRequest& request, std::vector<StepComparison>& steps
   std::vector<TraceSample> samples;
   extras.samples = &samples;
   extras.stopAtDifference = false;
-  traceAt(PrecisionChoice{Precision::Mpfr, 256}, request, nullptr, nullptr, std::numeric_limits<std::size_t>::max(), extras);
+  traceAt(PrecisionChoice{Precision::Mpfr, 256}, request, nullptr, nullptr, std::numeric_limits<std::size_t>::max(),
+          extras);
   for (StepComparison& s : steps) {
     if (!s.parting) continue;
     PartingCheck& p = *s.parting;
-    const auto at = std::find_if(samples.begin(), samples.end(), [&](const TraceSample& r) { return r.time == p.time; });
+    const auto at =
+        std::find_if(samples.begin(), samples.end(), [&](const TraceSample& r) { return r.time == p.time; });
     if (at == samples.end()) throw std::logic_error("the mpfr:256 run was not sampled where the paths part");
     for (std::size_t i = 0; i < at->x.size(); ++i) p.reference.emplace_back(at->x[i].toDouble(), at->y[i].toDouble());
     p.oursOff = largestDistance(p.ours, p.reference);
@@ -211,7 +216,8 @@ std::vector<std::pair<std::size_t, std::size_t>> matchCollisions(const std::vect
     if (it == byPair.end()) continue;
     for (std::size_t j : it->second) {
       const double d = std::fabs(box2d[j].time - ours[i].time);
-      if (d <= window && length(box2d[j].position - ours[i].position) <= kMatchDistance) candidates.emplace_back(d, i, j);
+      if (d <= window && length(box2d[j].position - ours[i].position) <= kMatchDistance)
+        candidates.emplace_back(d, i, j);
     }
   }
   std::sort(candidates.begin(), candidates.end());
@@ -270,8 +276,9 @@ CrosscheckReport crosscheckRuns(const RunRequest& request, const std::vector<Eng
     // What the engine counted (the driver's runs do; a trace has no field for it: 0).
     c.speedCappedSteps = r.record.speedCappedSteps;
     c.rotationCappedSteps = r.record.rotationCappedSteps;
-    c.steps = static_cast<std::uint64_t>(std::count_if(r.record.samples.begin(), r.record.samples.end(),
-                                                       [&](const TrajectorySample& s) { return s.time > 0 && s.time <= end; }));
+    c.steps = static_cast<std::uint64_t>(
+        std::count_if(r.record.samples.begin(), r.record.samples.end(),
+                      [&](const TrajectorySample& s) { return s.time > 0 && s.time <= end; }));
     report.steps.push_back(std::move(c));
   }
   checkPartings(request, report.steps);

@@ -56,7 +56,8 @@ class Driver {
       const double pi = piOf<double>();
       // Every flipper turns at the rate that brings it to the schedule's angle at t1 (never a
       // half turn in a step: the difference is taken the short way round).
-      for (std::size_t f : flippers_) engine_.turn(f, std::remainder(flipperAngle(bodies_[f], t1) - engine_.angle(f), 2 * pi));
+      for (std::size_t f : flippers_)
+        engine_.turn(f, std::remainder(flipperAngle(bodies_[f], t1) - engine_.angle(f), 2 * pi));
       // A spinner turns on the core's schedule too: to where the shadow spinner stands at t1. The
       // cross looks the same a quarter turn on, so the turn is taken the short way round modulo
       // a quarter (a body's angle counts on, the core's restarts every whole turn).
@@ -153,7 +154,8 @@ class Driver {
     gizmo.fireTrigger(access_);
     for (std::size_t i = 0; i < balls_.size(); ++i) {
       const Ball<double>& released = shadow_->ballById(balls_[i]);
-      if (heldBefore[i] && !released.captured()) engine_.release(i, released.positionAt(time), released.velocityAt(time));
+      if (heldBefore[i] && !released.captured())
+        engine_.release(i, released.positionAt(time), released.velocityAt(time));
     }
   }
 
@@ -193,7 +195,7 @@ class Driver {
   SteppedEngine& engine_;
   std::unique_ptr<GameBoard<double>> shadow_;  // the core's gizmos, never ticked: their rules only
   DrivenBoardAccess access_;
-  std::vector<GizmoId> bodies_, balls_;        // the engine's bodies and balls in the shadow board
+  std::vector<GizmoId> bodies_, balls_;           // the engine's bodies and balls in the shadow board
   std::vector<std::size_t> flippers_, spinners_;  // engine body numbers
   std::map<GizmoId, std::vector<GizmoId>> triggers_;
   std::vector<TimedKey> keys_;

@@ -137,16 +137,12 @@ Box2dPart placePart(const Box2dPart& part, const Vec2<double>& origin, int quart
 Shape<double> coreShape(const Box2dPart& part) {
   Shape<double> shape;
   switch (part.kind) {
-    case Box2dPart::Kind::Polygon:
-      addPolygon(shape, part.points);
-      break;
+    case Box2dPart::Kind::Polygon: addPolygon(shape, part.points); break;
     case Box2dPart::Kind::Edge:
       // The wall's free side is the board's (outerWallsShape's order); its ends cannot be met.
       shape.segments.push_back(makeSegment(part.points.at(0), part.points.at(1)));
       break;
-    case Box2dPart::Kind::Circle:
-      shape.circles.push_back(CircleFeature<double>{part.centre, 0});
-      break;
+    case Box2dPart::Kind::Circle: shape.circles.push_back(CircleFeature<double>{part.centre, 0}); break;
   }
   return shape;
 }

@@ -61,7 +61,9 @@ GizmoSpec gizmoAt(GizmoType type, int orientation) {
 int quarterFrom(double u) { return std::min(3, static_cast<int>(u * 4)) * 90; }
 
 // Our shape of the obstacle at rest (a flipper's capsule at its rest angle).
-Shape<double> obstacleShape(const StraightSweep& s) { return s.walls ? outerWallsShape<double>() : restShape<double>(s.gizmo); }
+Shape<double> obstacleShape(const StraightSweep& s) {
+  return s.walls ? outerWallsShape<double>() : restShape<double>(s.gizmo);
+}
 
 // The ball placed so that its centre reaches the contact centre c (normal nrm) after
 // travelling `travel` along d at `speed`; the sweep lasts a little longer than that. A start
@@ -78,7 +80,9 @@ void aim(StraightSweep& s, const Vec2<double>& c, const Vec2<double>& nrm, Vec2<
   s.duration = (travel / speed) / (0.1 + 0.8 * stretch);
 }
 
-bool swings(const StraightSweep& s) { return s.kind == SweepKind::FlipperSwinging || s.kind == SweepKind::FlipperQuarterTurn; }
+bool swings(const StraightSweep& s) {
+  return s.kind == SweepKind::FlipperSwinging || s.kind == SweepKind::FlipperQuarterTurn;
+}
 
 // The core's flipper of the sweep; a swinging one was triggered at rest swingStart seconds
 // before time 0, so that at time 0 it is that far into its forward swing.
@@ -86,7 +90,8 @@ std::unique_ptr<Flipper<double>> flipperOf(const StraightSweep& s) {
   auto flipper = std::make_unique<Flipper<double>>(s.gizmo);
   if (swings(s)) {
     PhysicsParams<double> params;
-    DrivenBoardAccess access(params, [](GizmoId) -> Ball<double>& { throw std::logic_error("a flipper's trigger needs no ball"); });
+    DrivenBoardAccess access(
+        params, [](GizmoId) -> Ball<double>& { throw std::logic_error("a flipper's trigger needs no ball"); });
     access.setNow(-s.swingStart);
     flipper->fireTrigger(access);
   }
@@ -116,23 +121,28 @@ StraightSweep makeSweep(SweepKind kind, const std::array<double, kSweepRandoms>&
   s.kind = kind;
   const double speed = 0.5 + 59.5 * u[4] * u[4];  // slow ones as often as fast ones
   const double travel = 0.05 + 4 * u[5];
-  const double approach = (u[2] - 0.5) * 2.4;      // up to ±69° off head-on
+  const double approach = (u[2] - 0.5) * 2.4;  // up to ±69° off head-on
   switch (kind) {
     case SweepKind::Edge: {
       if (u[0] < 0.2) s.walls = true;
-      else s.gizmo = u[0] < 0.6 ? gizmoAt(GizmoType::Square, 0) : gizmoAt(GizmoType::Triangle, quarterFrom((u[0] - 0.6) / 0.4));
+      else
+        s.gizmo =
+            u[0] < 0.6 ? gizmoAt(GizmoType::Square, 0) : gizmoAt(GizmoType::Triangle, quarterFrom((u[0] - 0.6) / 0.4));
       const Shape<double> shape = obstacleShape(s);
-      const SegmentFeature<double>& e = shape.segments.at(std::min(shape.segments.size() - 1, std::size_t(u[6] * shape.segments.size())));
+      const SegmentFeature<double>& e =
+          shape.segments.at(std::min(shape.segments.size() - 1, std::size_t(u[6] * shape.segments.size())));
       const Vec2<double> at = e.a + ((0.05 + 0.9 * u[1]) * e.length) * e.direction;
       aim(s, at + kR * e.normal, e.normal, turned(-e.normal, approach), speed, travel, u[3]);
       break;
     }
     case SweepKind::Vertex: {
-      s.gizmo = u[0] < 0.4 ? gizmoAt(GizmoType::Square, 0) : gizmoAt(GizmoType::Triangle, quarterFrom((u[0] - 0.4) / 0.6));
+      s.gizmo =
+          u[0] < 0.4 ? gizmoAt(GizmoType::Square, 0) : gizmoAt(GizmoType::Triangle, quarterFrom((u[0] - 0.4) / 0.6));
       const Shape<double> shape = restShape<double>(s.gizmo);
       const std::size_t n = shape.segments.size(), i = std::min(n - 1, std::size_t(u[6] * n));
       // The contact normal lies between the normals of the two edges that meet at vertex i.
-      const Vec2<double> nrm = unit((1 - u[1]) * shape.segments[(i + n - 1) % n].normal + u[1] * shape.segments[i].normal);
+      const Vec2<double> nrm =
+          unit((1 - u[1]) * shape.segments[(i + n - 1) % n].normal + u[1] * shape.segments[i].normal);
       aim(s, shape.segments[i].a + kR * nrm, nrm, turned(-nrm, 0.8 * approach), speed, travel, u[3]);
       break;
     }
@@ -156,7 +166,8 @@ StraightSweep makeSweep(SweepKind kind, const std::array<double, kSweepRandoms>&
       break;
     }
     case SweepKind::FlipperAtRest: {
-      s.gizmo = gizmoAt(u[0] < 0.5 ? GizmoType::LeftFlipper : GizmoType::RightFlipper, quarterFrom(std::fmod(2 * u[0], 1.0)));
+      s.gizmo =
+          gizmoAt(u[0] < 0.5 ? GizmoType::LeftFlipper : GizmoType::RightFlipper, quarterFrom(std::fmod(2 * u[0], 1.0)));
       const Shape<double> capsule = restShape<double>(s.gizmo);  // sides 0 and 1, ends 2 (pivot) and 3 (tip)
       Vec2<double> c, nrm;
       if (u[1] < 0.6) {
@@ -176,7 +187,8 @@ StraightSweep makeSweep(SweepKind kind, const std::array<double, kSweepRandoms>&
     }
     case SweepKind::FlipperSwinging:
     case SweepKind::FlipperQuarterTurn: {
-      s.gizmo = gizmoAt(u[0] < 0.5 ? GizmoType::LeftFlipper : GizmoType::RightFlipper, quarterFrom(std::fmod(2 * u[0], 1.0)));
+      s.gizmo =
+          gizmoAt(u[0] < 0.5 ? GizmoType::LeftFlipper : GizmoType::RightFlipper, quarterFrom(std::fmod(2 * u[0], 1.0)));
       // One Box2D step of a swing (1/480 to 1/60 s, from anywhere in it), or the whole quarter turn.
       const double swing = 1.0 / 12;
       if (kind == SweepKind::FlipperSwinging) {
@@ -332,13 +344,15 @@ std::optional<double> box2dStop(const StraightSweep& s, double shift) {
     // stops a ball of radius target − radius (box2d_mapping.cpp: their union is the capsule).
     const SwingingAxis<double> axis = flipperOf(s)->axisAt(0);
     const double r = box2dToiTarget(kR + axis.radius) + shift - axis.radius;
-    std::optional<double> best = circleTimeOfImpact(path, r, CircleFeature<double>{axis.pivot, axis.radius}, s.duration);
+    std::optional<double> best =
+        circleTimeOfImpact(path, r, CircleFeature<double>{axis.pivot, axis.radius}, s.duration);
     if (const auto hit = swingingCapsuleTimeOfImpact(path, r, axis, best ? *best : s.duration))
       if (!best || hit->tau < *best) best = hit->tau;
     return best;
   }
   const Box2dBody body = s.walls ? box2dOuterWalls() : box2dBodyOf(s.gizmo);
-  const int quarter = isFlipper(s.gizmo.type) && !s.walls ? flipperLayout(s.gizmo.type, s.gizmo.orientation).restQuarter : 0;
+  const int quarter =
+      isFlipper(s.gizmo.type) && !s.walls ? flipperLayout(s.gizmo.type, s.gizmo.orientation).restQuarter : 0;
   std::optional<FeatureHit<double>> best;
   for (const Box2dPart& part : body.parts) {
     const Box2dPart placed = placePart(part, body.origin, quarter);
@@ -398,8 +412,11 @@ SweepVerdict compareSweep(const StraightSweep& s) {
 
 std::string describeSweep(const StraightSweep& s) {
   char buf[512];
-  static constexpr const char* kTypeNames[] = {"Square", "Circle", "Triangle", "LeftFlipper", "RightFlipper", "Absorber"};
-  const char* obstacle = s.kind == SweepKind::Ball ? "another ball" : s.walls ? "OuterWalls" : kTypeNames[int(s.gizmo.type)];
+  static constexpr const char* kTypeNames[] = {"Square",      "Circle",       "Triangle",
+                                               "LeftFlipper", "RightFlipper", "Absorber"};
+  const char* obstacle = s.kind == SweepKind::Ball ? "another ball"
+                         : s.walls                 ? "OuterWalls"
+                                                   : kTypeNames[int(s.gizmo.type)];
   std::snprintf(buf, sizeof buf, "kind %s, obstacle %s at (%d, %d) orientation %d, ball p (%a, %a) v (%a, %a)",
                 std::string(sweepKindName(s.kind)).c_str(), obstacle, s.gizmo.x, s.gizmo.y, s.gizmo.orientation, s.p.x,
                 s.p.y, s.v.x, s.v.y);

@@ -123,7 +123,7 @@ class Box2d24Engine final : public SteppedEngine, public b2ContactListener {
     b2FixtureDef def;
     def.shape = &shape;
     def.density = 1;
-    def.friction = 0;  // Box2D's Coulomb friction off: the Gizmoball law is applied each step
+    def.friction = 0;     // Box2D's Coulomb friction off: the Gizmoball law is applied each step
     def.restitution = 0;  // set per contact in PreSolve
     def.restitutionThreshold = static_cast<float>(options_.restitutionThreshold);
     def.isSensor = sensor;
@@ -229,7 +229,8 @@ CollisionRecord collisionRecord(double time, std::string ball, std::string other
 }
 
 std::string box2dVersion() {
-  return std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) + "." + std::to_string(b2_version.revision);
+  return std::to_string(b2_version.major) + "." + std::to_string(b2_version.minor) + "." +
+         std::to_string(b2_version.revision);
 }
 
 RunRecord runBox2d(const RunRequest& request, const Box2dOptions& options) {

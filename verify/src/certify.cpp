@@ -175,7 +175,8 @@ class CertifyingObserver final : public BoardObserver<double> {
         if (shape && std::size_t(c->feature) < shape->segments.size()) {
           const SegmentFeature<double>& seg = shape->segments[std::size_t(c->feature)];
           for (std::size_t k = 0; k < shape->circles.size(); ++k)
-            if (capsEndOf(shape->circles[k], seg)) out.skippedFeatures.push_back(std::int32_t(shape->segments.size() + k));
+            if (capsEndOf(shape->circles[k], seg))
+              out.skippedFeatures.push_back(std::int32_t(shape->segments.size() + k));
         }
       }
     }
@@ -349,7 +350,8 @@ class CertifyingObserver final : public BoardObserver<double> {
                    UncertifiedReason why) {
     ++report_.uncertifiedByReason[std::size_t(why)];
     if (report_.uncertified.size() < 100)
-      report_.uncertified.push_back(UncertifiedDecision{in.eventIndex, time, executed, why, refOf(o.other), exactBound(o.window)});
+      report_.uncertified.push_back(
+          UncertifiedDecision{in.eventIndex, time, executed, why, refOf(o.other), exactBound(o.window)});
   }
 
   GameBoard<double>& board_;

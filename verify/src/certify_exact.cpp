@@ -50,14 +50,15 @@ QPoly along(const QMotion& m, const QVec& a, const QVec& w) {
 
 // |d + v s + h s²|² − reach²
 QPoly roundGap(const QVec& d, const QVec& v, const QVec& h, const Rational& reach) {
-  return poly({dotOf(d, d) - reach * reach, 2 * dotOf(d, v), dotOf(v, v) + 2 * dotOf(d, h), 2 * dotOf(v, h),
-               dotOf(h, h)});
+  return poly(
+      {dotOf(d, d) - reach * reach, 2 * dotOf(d, v), dotOf(v, v) + 2 * dotOf(d, h), 2 * dotOf(v, h), dotOf(h, h)});
 }
 
 // √x when it is rational (numerator and denominator perfect squares in lowest terms).
 std::optional<Rational> rationalRoot(const Rational& x) {
   const mpq_srcptr q = x.backend().data();
-  if (mpq_sgn(q) < 0 || !mpz_perfect_square_p(mpq_numref(q)) || !mpz_perfect_square_p(mpq_denref(q))) return std::nullopt;
+  if (mpq_sgn(q) < 0 || !mpz_perfect_square_p(mpq_numref(q)) || !mpz_perfect_square_p(mpq_denref(q)))
+    return std::nullopt;
   Rational root;
   mpz_sqrt(mpq_numref(root.backend().data()), mpq_numref(q));
   mpz_sqrt(mpq_denref(root.backend().data()), mpq_denref(q));
@@ -143,7 +144,8 @@ class Polynomials {
       shape = &s->still;
     }
     const std::size_t feature = std::size_t(k.feature);
-    if (feature < shape->segments.size()) return segmentGap(m, shape->segments[feature].a, shape->segments[feature].b, r_);
+    if (feature < shape->segments.size())
+      return segmentGap(m, shape->segments[feature].a, shape->segments[feature].b, r_);
     const std::size_t c = feature - shape->segments.size();
     if (c >= shape->circles.size()) return std::nullopt;
     const CircleFeature<double>& circle = shape->circles[c];
@@ -312,7 +314,8 @@ std::optional<RungOutcome> settleExactly(const BoardLayout& layout, const BoardS
   if (firstBefore) {
     out.verdict = Verdict::Wrong;
     out.tiedWith.clear();
-    out.explanation = "another event comes first, proven in exact rational arithmetic (closer than any interval rung could separate)";
+    out.explanation =
+        "another event comes first, proven in exact rational arithmetic (closer than any interval rung could separate)";
   } else if (!out.tiedWith.empty()) {
     out.verdict = Verdict::Tie;
   }

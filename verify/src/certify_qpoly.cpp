@@ -87,8 +87,6 @@ int SturmChain::signChangesAt(const Rational& x) const {
   return changes;
 }
 
-int SturmChain::rootsIn(const Rational& a, const Rational& b) const {
-  return signChangesAt(a) - signChangesAt(b);
-}
+int SturmChain::rootsIn(const Rational& a, const Rational& b) const { return signChangesAt(a) - signChangesAt(b); }
 
 }  // namespace gizmo::verify::detail

@@ -20,12 +20,17 @@ std::string both(const ExactBound& b) {
 }
 
 nlohmann::ordered_json boundJson(const ExactBound& b) {
-  return nlohmann::ordered_json{{"hex", b.hex}, {"value", std::isfinite(b.value) ? nlohmann::ordered_json(b.value) : nlohmann::ordered_json(b.hex)}};
+  return nlohmann::ordered_json{
+      {"hex", b.hex},
+      {"value", std::isfinite(b.value) ? nlohmann::ordered_json(b.value) : nlohmann::ordered_json(b.hex)}};
 }
 
 nlohmann::ordered_json eventJson(const EventRef& e) {
-  return nlohmann::ordered_json{{"kind", std::string(eventKindName(e.kind))}, {"a", e.a}, {"b", e.b},
-                        {"feature", e.feature}, {"description", e.description}};
+  return nlohmann::ordered_json{{"kind", std::string(eventKindName(e.kind))},
+                                {"a", e.a},
+                                {"b", e.b},
+                                {"feature", e.feature},
+                                {"description", e.description}};
 }
 
 std::string rungName(long bits) {
@@ -46,8 +51,8 @@ void printCertifyReport(std::ostream& out, const CertifyReport& r) {
   for (std::size_t i = 0; i < r.rungBits.size(); ++i)
     out << "  certified with " << rungName(r.rungBits[i]) << ": " << r.certifiedAtRung[i] << "\n";
   for (int k = 0; k < kUncertifiedReasonCount; ++k)
-    out << "  not certified, " << uncertifiedReasonName(UncertifiedReason(k)) << ": " << r.uncertifiedByReason[std::size_t(k)]
-        << "\n";
+    out << "  not certified, " << uncertifiedReasonName(UncertifiedReason(k)) << ": "
+        << r.uncertifiedByReason[std::size_t(k)] << "\n";
   std::size_t tieOrderBroken = 0;
   for (const TieDecision& t : r.ties) tieOrderBroken += t.orderFollowed ? 0 : 1;
   out << "  ties: " << r.ties.size() << " (proven exact: " << r.provenTies() << ", within " << tieResolution(r)
@@ -67,9 +72,9 @@ void printCertifyReport(std::ostream& out, const CertifyReport& r) {
 std::string wrongDecisionLine(const WrongDecision& w) {
   std::ostringstream out;
   out << "wrong decision at event " << w.eventIndex << ", t = " << both(w.time) << ": ran " << w.executed.description
-      << ", but " << w.shouldHaveComeFirst.description << " should have come first, by at least "
-      << both(w.byAtLeast) << " and at most " << both(w.byAtMost) << " s [" << w.explanation << "; proven with "
-      << rungName(w.rungBits) << "]";
+      << ", but " << w.shouldHaveComeFirst.description << " should have come first, by at least " << both(w.byAtLeast)
+      << " and at most " << both(w.byAtMost) << " s [" << w.explanation << "; proven with " << rungName(w.rungBits)
+      << "]";
   return out.str();
 }
 
@@ -100,16 +105,26 @@ std::string certifyReportJson(const CertifyReport& r) {
   for (const TieDecision& t : r.ties) {
     nlohmann::ordered_json also = nlohmann::ordered_json::array();
     for (const EventRef& e : t.alsoTied) also.push_back(eventJson(e));
-    ties.push_back({{"event", t.eventIndex}, {"time", boundJson(t.time)}, {"executed", eventJson(t.executed)},
-                    {"other", eventJson(t.other)}, {"also_tied", also}, {"proven", t.proven},
-                    {"within", boundJson(t.within)}, {"order_followed", t.orderFollowed}});
+    ties.push_back({{"event", t.eventIndex},
+                    {"time", boundJson(t.time)},
+                    {"executed", eventJson(t.executed)},
+                    {"other", eventJson(t.other)},
+                    {"also_tied", also},
+                    {"proven", t.proven},
+                    {"within", boundJson(t.within)},
+                    {"order_followed", t.orderFollowed}});
   }
   j["ties"] = ties;
   nlohmann::ordered_json wrong = nlohmann::ordered_json::array();
   for (const WrongDecision& w : r.wrong)
-    wrong.push_back({{"event", w.eventIndex}, {"time", boundJson(w.time)}, {"executed", eventJson(w.executed)},
-                     {"should_have_come_first", eventJson(w.shouldHaveComeFirst)}, {"by_at_least", boundJson(w.byAtLeast)},
-                     {"by_at_most", boundJson(w.byAtMost)}, {"explanation", w.explanation}, {"proven_with_bits", w.rungBits}});
+    wrong.push_back({{"event", w.eventIndex},
+                     {"time", boundJson(w.time)},
+                     {"executed", eventJson(w.executed)},
+                     {"should_have_come_first", eventJson(w.shouldHaveComeFirst)},
+                     {"by_at_least", boundJson(w.byAtLeast)},
+                     {"by_at_most", boundJson(w.byAtMost)},
+                     {"explanation", w.explanation},
+                     {"proven_with_bits", w.rungBits}});
   j["wrong"] = wrong;
   return j.dump(2);
 }

@@ -1,11 +1,11 @@
 // The rungs of the ladder: the kernel instantiated with the double intervals (under one
 // upward-rounding scope per decision) and with MPFI, then the exact step. Built with
 // -frounding-math (verify/CMakeLists.txt).
-#include "gizmo/verify/interval_trig.hpp"  // before the kernel: its sin and cos of Interval
-#include "gizmo/verify/mpfi_interval.hpp"
 #include "gizmo/verify/certify_decider.hpp"
 #include "gizmo/verify/certify_exact.hpp"
 #include "gizmo/verify/certify_ladder.hpp"
+#include "gizmo/verify/interval_trig.hpp"  // before the kernel: its sin and cos of Interval
+#include "gizmo/verify/mpfi_interval.hpp"
 
 namespace gizmo::verify::detail {
 

@@ -50,7 +50,8 @@ class TraceReader {
   }
 
   Json parse(const std::string& text) const {
-    if (text.find_first_not_of(" \t\r") == std::string::npos) fail(line_, "an empty line (each line is one JSON object)");
+    if (text.find_first_not_of(" \t\r") == std::string::npos)
+      fail(line_, "an empty line (each line is one JSON object)");
     Json value;
     try {
       value = Json::parse(text);
@@ -94,7 +95,8 @@ class TraceReader {
     if (!h.at("format").is_string() || h.at("format").get<std::string>() != kEngineTraceFormat)
       fail(line_, std::string("the header's \"format\" is not \"") + kEngineTraceFormat + "\"");
     if (!h.at("version").is_number_integer() || h.at("version").get<long long>() != kEngineTraceVersion)
-      fail(line_, "the header's \"version\" is not " + std::to_string(kEngineTraceVersion) + ", the version this reader knows");
+      fail(line_, "the header's \"version\" is not " + std::to_string(kEngineTraceVersion) +
+                      ", the version this reader knows");
     trace_.engine = text(h, "engine", "the header");
     if (trace_.engine.empty()) fail(line_, "the header's \"engine\" is empty");
     if (!h.at("contacts").is_boolean()) fail(line_, "the header's \"contacts\" is not true or false");
@@ -112,7 +114,8 @@ class TraceReader {
     TrajectorySample sample;
     sample.time = finite(s, "t", "the step");
     std::vector<TrajectorySample>& samples = trace_.run.record.samples;
-    if (samples.empty() && sample.time != 0) fail(line_, "the first step's \"t\" is " + number(sample.time) + ", not 0");
+    if (samples.empty() && sample.time != 0)
+      fail(line_, "the first step's \"t\" is " + number(sample.time) + ", not 0");
     const double previous = samples.empty() ? 0 : samples.back().time;
     if (!samples.empty()) {
       if (sample.time <= previous)
@@ -143,7 +146,8 @@ class TraceReader {
       if (!held) sample.energy += 0.5 * lengthSquared(v) + board_.gravity * (kBoardSize - p.y);
     }
     for (const BallSpec& b : board_.balls)
-      if (!balls.contains(b.name)) fail(line_, "\"balls\" has no ball '" + b.name + "' (every ball of the board, each step)");
+      if (!balls.contains(b.name))
+        fail(line_, "\"balls\" has no ball '" + b.name + "' (every ball of the board, each step)");
   }
 
   void contacts(const Json& list, double from, double to) {
@@ -154,12 +158,15 @@ class TraceReader {
       keys(c, what, {"t", "ball", "other", "x", "y"}, {});
       const double t = finite(c, "t", what);
       if (t < from || t > to)
-        fail(line_, "a contact at " + number(t) + " s lies outside its step, " + number(from) + " to " + number(to) + " s");
+        fail(line_,
+             "a contact at " + number(t) + " s lies outside its step, " + number(from) + " to " + number(to) + " s");
       std::vector<CollisionRecord>& hits = trace_.run.record.collisions;
       if (!hits.empty() && t < hits.back().time)
-        fail(line_, "a contact at " + number(t) + " s comes before the one listed before it, at " + number(hits.back().time) + " s");
+        fail(line_, "a contact at " + number(t) + " s comes before the one listed before it, at " +
+                        number(hits.back().time) + " s");
       const std::string ball = text(c, "ball", what), other = text(c, "other", what);
-      if (!ballIndex_.contains(ball)) fail(line_, "a contact names '" + ball + "' as its ball, which is not a ball of the board");
+      if (!ballIndex_.contains(ball))
+        fail(line_, "a contact names '" + ball + "' as its ball, which is not a ball of the board");
       const bool otherIsBall = ballIndex_.contains(other);
       if (other == ball) fail(line_, "a contact of ball '" + ball + "' with itself");
       // Its position is `ball`'s centre; of two balls, the report names the one that sorts first.

@@ -29,8 +29,9 @@ SceneArithmetic sceneArithmetic(const RunRequest& request) {
     }
   }
   s.rationalPossible = true;
-  s.reason = "classic model, mu2 = 0, axis-aligned edges: exact unless a ball meets a corner, a circle or a "
-             "swinging flipper";
+  s.reason =
+      "classic model, mu2 = 0, axis-aligned edges: exact unless a ball meets a corner, a circle or a "
+      "swinging flipper";
   return s;
 }
 
@@ -44,7 +45,8 @@ std::vector<PrecisionChoice> defaultLadder(const RunRequest& request) {
 
 TracedRun traceAt(const PrecisionChoice& p, const RunRequest& request, const Trace* reference, Trace* record,
                   std::size_t exactDigits, const TraceExtras& extras) {
-  return withPrecision(p, [&]<class Real>() { return traceRun<Real>(request, reference, record, exactDigits, extras); });
+  return withPrecision(p,
+                       [&]<class Real>() { return traceRun<Real>(request, reference, record, exactDigits, extras); });
 }
 
 double timeAt(const PrecisionChoice& p, const RunRequest& request, std::uint64_t maxEvents, std::uint64_t& events) {
@@ -68,8 +70,8 @@ LadderReport runLadder(const LadderOptions& options) {
   // The reference: the one asked for, else the cheapest exact arithmetic the scene allows, else
   // MPFR at 256 bits.
   const PrecisionChoice mpfr256 = *parsePrecision("mpfr:256");
-  PrecisionChoice reference = options.reference.value_or(report.scene.rationalPossible ? *parsePrecision("rational")
-                                                                                        : mpfr256);
+  PrecisionChoice reference =
+      options.reference.value_or(report.scene.rationalPossible ? *parsePrecision("rational") : mpfr256);
   Trace trace;
   TracedRun referenceRun = traceAt(reference, options, nullptr, &trace);
   if (!referenceRun.stopped.empty() && !options.reference && reference.kind == Precision::Rational) {
@@ -79,7 +81,8 @@ LadderReport runLadder(const LadderOptions& options) {
     referenceRun = traceAt(reference, options, nullptr, &trace);
   }
   if (!referenceRun.stopped.empty())
-    report.notes.push_back("the reference run (" + precisionName(reference) + ") stopped early: " + referenceRun.stopped);
+    report.notes.push_back("the reference run (" + precisionName(reference) +
+                           ") stopped early: " + referenceRun.stopped);
   report.reference = precisionName(reference);
   std::optional<CertifyReport> certified;
   if (options.certifyWhereInexact && reference.kind != Precision::Rational) certified = certifyRun(options.request);
@@ -124,7 +127,8 @@ LadderReport runLadder(const LadderOptions& options) {
     r.maxPositionError = run.agreement.maxPositionError;
     r.energyDrift = run.agreement.energyDrift;
     const bool exact = p.kind == Precision::Rational;
-    r.wallSeconds = timeAt(p, options.request, exact ? run.events : std::numeric_limits<std::uint64_t>::max(), r.events);
+    r.wallSeconds =
+        timeAt(p, options.request, exact ? run.events : std::numeric_limits<std::uint64_t>::max(), r.events);
     r.endTime = run.endTime;
     r.eventsPerSecond = r.wallSeconds > 0 ? double(r.events) / r.wallSeconds : 0;
     r.costRatio = doubleSeconds > 0 ? r.wallSeconds / doubleSeconds : 0;

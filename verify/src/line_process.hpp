@@ -3,8 +3,8 @@
 // output (its standard error stays the caller's), so that a request and its reply go back and
 // forth without a file between them. The Box2D v3 engine uses it to step the node program
 // (box2d3_run.cpp).
-#include <string>
 #include <sys/types.h>
+#include <string>
 #include <vector>
 
 namespace gizmo::verify {

@@ -190,8 +190,7 @@ class SceneRunner {
     const int repeats = v3 && plan_.quick ? 1 : plan_.repeats;
     try {
       for (int k = 0; k < repeats; ++k) {
-        RunRecord record =
-            v3 ? runBox2d3(scene_.request, options).run.record : runBox2d(scene_.request, options);
+        RunRecord record = v3 ? runBox2d3(scene_.request, options).run.record : runBox2d(scene_.request, options);
         seconds.push_back(record.wallSeconds);
         if (k == 0) first = std::move(record);
         else if (record.collisions.size() != first.collisions.size() && r.stopped.empty())
@@ -249,7 +248,8 @@ std::string StudyMethod::label() const {
     case MethodFamily::Box2dV3NoBullet: {
       // Step sizes are 1/N of a second: say so, as Box2D's users do.
       const double n = 1 / tick;
-      const std::string step = std::fabs(n - std::round(n)) < 1e-9 ? "1/" + formatTick(std::round(n)) : formatTick(tick);
+      const std::string step =
+          std::fabs(n - std::round(n)) < 1e-9 ? "1/" + formatTick(std::round(n)) : formatTick(tick);
       return std::string(familyName(family)) + " dt=" + step;
     }
   }
@@ -282,7 +282,8 @@ std::vector<StudyMethod> StudyPlan::methods() const {
   for (double h : classicTicks)
     for (const PrecisionChoice& p : precisions) out.push_back(StudyMethod{MethodFamily::Classic, p, h});
   for (double dt : box2dSteps)
-    for (MethodFamily f : {MethodFamily::Box2d, MethodFamily::Box2dNoBullet, MethodFamily::Box2dV3, MethodFamily::Box2dV3NoBullet})
+    for (MethodFamily f :
+         {MethodFamily::Box2d, MethodFamily::Box2dNoBullet, MethodFamily::Box2dV3, MethodFamily::Box2dV3NoBullet})
       out.push_back(StudyMethod{f, PrecisionChoice{}, dt});
   return out;
 }

@@ -32,14 +32,19 @@ struct Group {
 };
 
 // Members of an entry that are numbers but not counters.
-const std::set<std::string> kNotCounters{"family_index", "per_family_instance_index", "repetitions", "repetition_index",
-                                         "threads", "iterations", "real_time", "cpu_time"};
+const std::set<std::string> kNotCounters{"family_index", "per_family_instance_index",
+                                         "repetitions",  "repetition_index",
+                                         "threads",      "iterations",
+                                         "real_time",    "cpu_time"};
 
 class EntryReader {
  public:
-  EntryReader(const std::string& file, std::size_t index) : file_(file), where_("benchmarks[" + std::to_string(index) + "]") {}
+  EntryReader(const std::string& file, std::size_t index)
+      : file_(file), where_("benchmarks[" + std::to_string(index) + "]") {}
 
-  [[noreturn]] void refuse(const std::string& what) const { throw StudyInputError(file_ + ": " + where_ + ": " + what); }
+  [[noreturn]] void refuse(const std::string& what) const {
+    throw StudyInputError(file_ + ": " + where_ + ": " + what);
+  }
 
   std::string text(const Json& e, const char* key) const {
     const auto it = e.find(key);
@@ -127,8 +132,10 @@ BenchSource sourceOf(const Json& doc, const std::string& file) {
   if (!context->is_object()) throw StudyInputError(file + ": \"context\" is not an object");
   // The context is description only: what is missing or of another type is left blank.
   if (const auto it = context->find("date"); it != context->end() && it->is_string()) s.date = it->get<std::string>();
-  if (const auto it = context->find("host_name"); it != context->end() && it->is_string()) s.host = it->get<std::string>();
-  if (const auto it = context->find("num_cpus"); it != context->end() && it->is_number_integer()) s.cpus = it->get<int>();
+  if (const auto it = context->find("host_name"); it != context->end() && it->is_string())
+    s.host = it->get<std::string>();
+  if (const auto it = context->find("num_cpus"); it != context->end() && it->is_number_integer())
+    s.cpus = it->get<int>();
   if (const auto it = context->find("mhz_per_cpu"); it != context->end() && it->is_number()) s.mhz = it->get<double>();
   if (const auto it = context->find("cpu_scaling_enabled"); it != context->end() && it->is_boolean())
     s.cpuScaling = it->get<bool>();
@@ -174,9 +181,11 @@ BenchResults parseBenchJson(const std::string& text, const std::string& file) {
     const std::string name = read.text(e, "name");
     if (name.empty()) read.refuse("\"name\" is empty");
     read.named(name);
-    if (const auto failed = e.find("error_occurred"); failed != e.end() && failed->is_boolean() && failed->get<bool>()) {
+    if (const auto failed = e.find("error_occurred");
+        failed != e.end() && failed->is_boolean() && failed->get<bool>()) {
       const auto message = e.find("error_message");
-      source.failed.push_back(name + ": " + (message != e.end() && message->is_string() ? message->get<std::string>() : "failed"));
+      source.failed.push_back(name + ": " +
+                              (message != e.end() && message->is_string() ? message->get<std::string>() : "failed"));
       continue;
     }
     const std::string runType = read.text(e, "run_type");
@@ -194,7 +203,8 @@ BenchResults parseBenchJson(const std::string& text, const std::string& file) {
     const double unit = read.nsPerUnit(read.text(e, "time_unit"));
     entry.realNs = read.time(e, "real_time", unit);
     entry.cpuNs = read.time(e, "cpu_time", unit);
-    if (const auto it = e.find("repetitions"); it != e.end() && it->is_number_integer()) entry.repetitions = it->get<int>();
+    if (const auto it = e.find("repetitions"); it != e.end() && it->is_number_integer())
+      entry.repetitions = it->get<int>();
     for (const auto& [key, value] : e.items())
       if (value.is_number() && !kNotCounters.count(key)) entry.counters[key] = value.get<double>();
 
@@ -209,8 +219,9 @@ BenchResults parseBenchJson(const std::string& text, const std::string& file) {
     if (g.mean || !g.runs.empty()) results.figures.push_back(figureOf(name, g, file));
   }
   if (results.figures.empty())
-    throw StudyInputError(file + ": no benchmark with a figure in it" +
-                          (source.failed.empty() ? std::string() : " (every one reported an error: " + source.failed.front() + ")"));
+    throw StudyInputError(
+        file + ": no benchmark with a figure in it" +
+        (source.failed.empty() ? std::string() : " (every one reported an error: " + source.failed.front() + ")"));
   return results;
 }
 

@@ -63,8 +63,8 @@ void drawPareto(const SceneReport& s, const std::filesystem::path& dir) {
   writeFile(dir / (stem + ".csv"), paretoData(s, points));
   writeFile(dir / (stem + "-front.csv"), paretoData(s, paretoFront(points)));
   drawWithGnuplot(dir,
-                  "datafile='" + stem + ".csv'; frontfile='" + stem + "-front.csv'; outfile='" + stem + ".svg'; scene='" +
-                      s.scene.name + "'",
+                  "datafile='" + stem + ".csv'; frontfile='" + stem + "-front.csv'; outfile='" + stem +
+                      ".svg'; scene='" + s.scene.name + "'",
                   "pareto.gp");
 }
 
@@ -103,12 +103,14 @@ std::string studyAsset(const std::string& name) {
 
 void drawWithGnuplot(const std::filesystem::path& dir, const std::string& variables, const std::string& script) {
   if (runGnuplot(dir, {"-e", variables, script}, false) != 0)
-    throw StudyOutputError("gnuplot failed on " + script + " (" + variables + "): see " + (dir / "gnuplot.log").string());
+    throw StudyOutputError("gnuplot failed on " + script + " (" + variables + "): see " +
+                           (dir / "gnuplot.log").string());
 }
 
 void requireGnuplot() {
   if (runGnuplot({}, {"--version"}, true) != 0)
-    throw StudyOutputError("gnuplot cannot be run: the study draws its charts with it (install gnuplot-nox, or run scripts/setup.sh)");
+    throw StudyOutputError(
+        "gnuplot cannot be run: the study draws its charts with it (install gnuplot-nox, or run scripts/setup.sh)");
 }
 
 void drawStudyCharts(const StudyReport& report, const std::string& dirName) {

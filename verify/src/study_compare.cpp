@@ -13,7 +13,8 @@ namespace {
 // The largest distance over the balls at one instant.
 double sampleDistance(const TraceSample& a, const TraceSample& b) {
   double d = 0;
-  for (std::size_t i = 0; i < std::min(a.x.size(), b.x.size()); ++i) d = std::max(d, distance(a.x[i], a.y[i], b.x[i], b.y[i]));
+  for (std::size_t i = 0; i < std::min(a.x.size(), b.x.size()); ++i)
+    d = std::max(d, distance(a.x[i], a.y[i], b.x[i], b.y[i]));
   return d;
 }
 
@@ -98,7 +99,8 @@ RunErrors compareWithReference(const StudyRun& reference, const StudyRun& run, d
   std::vector<bool> refMatched(reference.collisions.size()), runMatched(run.collisions.size());
   for (const auto& [i, j] : pairs) refMatched[i] = runMatched[j] = true;
   const double countedUntil = end - window;
-  auto firstUnmatched = [&](const std::vector<CollisionRecord>& list, const std::vector<bool>& matched) -> std::optional<std::size_t> {
+  auto firstUnmatched = [&](const std::vector<CollisionRecord>& list,
+                            const std::vector<bool>& matched) -> std::optional<std::size_t> {
     for (std::size_t k = 0; k < list.size(); ++k)
       if (!matched[k] && list[k].time <= countedUntil) return k;
     return std::nullopt;

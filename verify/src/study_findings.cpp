@@ -126,7 +126,9 @@ std::string failsFrom(const SceneReport& scene, MethodFamily family) {
     if (prefix == failing.size() && results[prefix] == r) ++prefix;
     failing.push_back(parameterOf(*r));
   }
-  const char* parameter = family == MethodFamily::Ballistic ? "precision" : family == MethodFamily::Classic ? "tick" : "step size";
+  const char* parameter = family == MethodFamily::Ballistic ? "precision"
+                          : family == MethodFamily::Classic ? "tick"
+                                                            : "step size";
   if (failing.empty()) return "never fails";
   if (failing.size() == results.size()) return std::string("fails at every ") + parameter;
   if (prefix == failing.size()) {

@@ -48,9 +48,10 @@ void drawChart(KernelChart chart, const std::vector<KernelPoint>& points, const 
     top = std::max(top, p.value.mean + p.value.stddev);
   }
   std::string tics = "set xtics (";
-  for (std::size_t c = 0; c < categories.size(); ++c) tics += (c ? ", " : "") + quoted(categories[c]) + " " + std::to_string(c);
-  tics += ")\nset xrange [-0.5:" + studyNumber(double(categories.size()) - 0.5) + "]\nnseries = " +
-          std::to_string(series.size()) + "\narray names[" + std::to_string(series.size()) + "] = [";
+  for (std::size_t c = 0; c < categories.size(); ++c)
+    tics += (c ? ", " : "") + quoted(categories[c]) + " " + std::to_string(c);
+  tics += ")\nset xrange [-0.5:" + studyNumber(double(categories.size()) - 0.5) +
+          "]\nnseries = " + std::to_string(series.size()) + "\narray names[" + std::to_string(series.size()) + "] = [";
   for (std::size_t s = 0; s < series.size(); ++s) tics += (s ? ", " : "") + quoted(series[s]);
   tics += "]\n";
   // A linear axis starts at 0, so that a ratio's distance from the dashed line reads true.

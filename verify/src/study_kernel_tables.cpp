@@ -63,7 +63,8 @@ std::string sourceText(const BenchSource& s) {
   if (!s.date.empty()) about.push_back(s.date);
   if (!s.host.empty()) about.push_back("host " + s.host);
   if (s.cpus > 0)
-    about.push_back(std::to_string(s.cpus) + " CPUs" + (s.mhz > 0 ? " at " + std::to_string(std::lround(s.mhz)) + " MHz" : ""));
+    about.push_back(std::to_string(s.cpus) + " CPUs" +
+                    (s.mhz > 0 ? " at " + std::to_string(std::lround(s.mhz)) + " MHz" : ""));
   if (s.cpuScaling) about.push_back("CPU frequency scaling on");
   return about.empty() ? text : text + " (" + joined(about, ", ") + ")";
 }
@@ -72,13 +73,14 @@ std::string chartSection(KernelChart chart, const std::vector<KernelPoint>& poin
   const KernelChartText& text = kernelChartText(chart);
   std::vector<std::string> categories, series;
   for (const KernelPoint& p : points) {
-    if (std::find(categories.begin(), categories.end(), p.category) == categories.end()) categories.push_back(p.category);
+    if (std::find(categories.begin(), categories.end(), p.category) == categories.end())
+      categories.push_back(p.category);
     if (std::find(series.begin(), series.end(), p.series) == series.end()) series.push_back(p.series);
   }
   const std::string name = kernelChartName(chart);
   const std::string title = studyHtmlText(text.title);
-  std::string html = "<h3 id=\"kernels-" + name + "\">" + title + "</h3>\n<p class=\"note\">" + studyHtmlText(text.what) +
-                     "</p>\n<p><img src=\"charts/kernels-" + name + ".svg\" alt=\"" + title +
+  std::string html = "<h3 id=\"kernels-" + name + "\">" + title + "</h3>\n<p class=\"note\">" +
+                     studyHtmlText(text.what) + "</p>\n<p><img src=\"charts/kernels-" + name + ".svg\" alt=\"" + title +
                      "\"></p>\n<table><tr><th class=\"text\"></th>";
   for (const std::string& s : series) html += "<th>" + studyHtmlText(s) + "</th>";
   html += "</tr>\n";
@@ -166,12 +168,13 @@ std::string kernelsSection(const BenchResults& bench, const KernelFigures& kerne
     fewest = fewest == 0 ? p.repetitions : std::min(fewest, p.repetitions);
     most = std::max(most, p.repetitions);
   }
-  std::string html = "<h2 id=\"kernels\">Kernels</h2>\n<p class=\"note\">Google Benchmark's figures from gizmo_bench (bench/): " +
-                     studyHtmlText(joined(files, "; ")) + ". Each is the mean over its repetitions (" +
-                     (fewest == most ? std::to_string(most) : std::to_string(fewest) + " to " + std::to_string(most)) +
-                     ") ± one standard deviation, Google Benchmark's own aggregates where it made them; a single run has "
-                     "no spread. A ratio is of two means, with both spreads carried into it. Absolute times depend on the "
-                     "machine and its load; ratios measured in one run much less.</p>\n";
+  std::string html =
+      "<h2 id=\"kernels\">Kernels</h2>\n<p class=\"note\">Google Benchmark's figures from gizmo_bench (bench/): " +
+      studyHtmlText(joined(files, "; ")) + ". Each is the mean over its repetitions (" +
+      (fewest == most ? std::to_string(most) : std::to_string(fewest) + " to " + std::to_string(most)) +
+      ") ± one standard deviation, Google Benchmark's own aggregates where it made them; a single run has "
+      "no spread. A ratio is of two means, with both spreads carried into it. Absolute times depend on the "
+      "machine and its load; ratios measured in one run much less.</p>\n";
   for (KernelChart chart : kKernelCharts) {
     const std::vector<KernelPoint> points = kernels.of(chart);
     if (!points.empty()) html += chartSection(chart, points);

@@ -14,7 +14,8 @@ namespace gizmo::verify {
 namespace {
 
 // The precisions in ladder order; a template argument the ladder does not know goes after them.
-const std::vector<std::string> kPrecisionOrder{"float", "double", "long-double", "float128", "bin50", "bin100", "mpfr:256"};
+const std::vector<std::string> kPrecisionOrder{"float", "double", "long-double", "float128",
+                                               "bin50", "bin100", "mpfr:256"};
 
 std::string precisionOfTemplateArgument(const std::string& argument) {
   if (argument == "long double") return "long-double";
@@ -37,7 +38,9 @@ std::size_t rankOf(const std::vector<std::string>& order, const std::string& ite
   return it == order.end() ? order.size() : std::size_t(it - order.begin());
 }
 
-const char* modelName(const std::string& ballisticArgument) { return ballisticArgument == "1" ? "ballistic" : "classic"; }
+const char* modelName(const std::string& ballisticArgument) {
+  return ballisticArgument == "1" ? "ballistic" : "classic";
+}
 
 class Builder {
  public:
@@ -126,8 +129,9 @@ class Builder {
           std::pair{"SpecExample600s", "spec example, 600 s"}, std::pair{"SpecExample3600s", "spec example, 3600 s"},
           std::pair{"Crowded60s", "crowded, 60 s"}, std::pair{"RealManyBalls60s", "many-balls, 60 s"},
           std::pair{"RealFlipperCollision60s", "flipper-coll, 60 s"}, std::pair{"RealMultiball60s", "multiball, 60 s"}})
-      for (const auto& [variant, series] : {std::pair{"Ballistic", "ballistic"}, std::pair{"BallisticObserved", "ballistic, observed"},
-                                            std::pair{"Classic", "classic"}}) {
+      for (const auto& [variant, series] :
+           {std::pair{"Ballistic", "ballistic"}, std::pair{"BallisticObserved", "ballistic, observed"},
+            std::pair{"Classic", "classic"}}) {
         const BenchFigure* f = bench_.find(std::string("BM_") + board + variant);
         if (!f) continue;
         const double events = counter(*f, "events/run"), eventRate = counter(*f, "events/s");
@@ -145,8 +149,8 @@ class Builder {
         const double perEvent = f->realNs.mean / events;
         const ReadableUnit unit = readableUnit(perEvent);
         char text[96];
-        std::snprintf(text, sizeof text, "%.3g %s per event, %.0f events in %.3g board s", perEvent / unit.ns, unit.name,
-                      events, boardSeconds);
+        std::snprintf(text, sizeof text, "%.3g %s per event, %.0f events in %.3g board s", perEvent / unit.ns,
+                      unit.name, events, boardSeconds);
         p.detail = text;
         figures_.points.push_back(p);
       }
@@ -169,8 +173,9 @@ class Builder {
 
   void recording() {
     for (const auto& [board, label] : {std::pair{"Spec", "spec example"}, std::pair{"Crowded", "crowded"}})
-      for (const auto& [variant, series] : {std::pair{"RecordedInMemory", "recorded in memory"},
-                                            std::pair{"RecordedToFile", "recorded to file"}, std::pair{"Replayed", "replayed"}})
+      for (const auto& [variant, series] :
+           {std::pair{"RecordedInMemory", "recorded in memory"}, std::pair{"RecordedToFile", "recorded to file"},
+            std::pair{"Replayed", "replayed"}})
         ratioPoint(KernelChart::Recording, label, series, "x unrecorded", std::string("BM_") + board + variant,
                    std::string("BM_") + board + "Unrecorded");
   }

@@ -59,11 +59,13 @@ double number(const std::string& token, const std::string& where, const char* wh
   return value;
 }
 
-StudyScene readScene(std::istringstream& words, const SuiteFiles& files, const std::string& where, double& quickSeconds) {
+StudyScene readScene(std::istringstream& words, const SuiteFiles& files, const std::string& where,
+                     double& quickSeconds) {
   StudyScene scene;
   std::string seconds, quick, every, kind;
   if (!(words >> scene.name >> scene.board >> seconds >> quick >> every >> kind))
-    throw StudyInputError(where + ": expected 'scene NAME BOARD SECONDS QUICK_SECONDS SAMPLE_EVERY main|stress [keys=FILE] NOTE'");
+    throw StudyInputError(
+        where + ": expected 'scene NAME BOARD SECONDS QUICK_SECONDS SAMPLE_EVERY main|stress [keys=FILE] NOTE'");
   if (scene.name.find_first_of(",\"<>&'") != std::string::npos)
     throw StudyInputError(where + ": scene name '" + scene.name + "' may not contain , \" < > & or '");
   scene.request.duration = number(seconds, where, "SECONDS");
@@ -73,7 +75,8 @@ StudyScene readScene(std::istringstream& words, const SuiteFiles& files, const s
     throw StudyInputError(where + ": SECONDS must be above 0 and at most 1000");
   if (quickSeconds > scene.request.duration) throw StudyInputError(where + ": QUICK_SECONDS is longer than SECONDS");
   if (scene.sampleEvery <= 0) throw StudyInputError(where + ": SAMPLE_EVERY must be above 0");
-  if (kind != "main" && kind != "stress") throw StudyInputError(where + ": the kind must be main or stress, not '" + kind + "'");
+  if (kind != "main" && kind != "stress")
+    throw StudyInputError(where + ": the kind must be main or stress, not '" + kind + "'");
   scene.stress = kind == "stress";
   std::string word;
   while (words >> word) {
@@ -121,7 +124,8 @@ std::vector<StudyScene> loadSuite(const std::string& dir, bool quick) {
     scenes.push_back(std::move(scene));
   }
   if (scenes.empty())
-    throw StudyInputError(files.display(kSuiteManifest) + (quick ? ": no scene has a quick duration" : ": names no scene"));
+    throw StudyInputError(files.display(kSuiteManifest) +
+                          (quick ? ": no scene has a quick duration" : ": names no scene"));
   return scenes;
 }
 

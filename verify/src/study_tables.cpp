@@ -54,11 +54,11 @@ std::string studyCsv(const StudyReport& report) {
           << number(r.wallSeconds.min) << ',' << number(r.wallSeconds.max) << ','
           << number(r.secondsPerBoardSecond.median) << ',' << number(r.secondsPerEvent.median) << ','
           << number(r.positionError) << ',' << number(r.positionErrorMedian) << ',' << optionalNumber(r.divergedAt)
-          << ',' << r.collisions << ',' << r.referenceCollisions << ',' << r.matched << ','
-          << number(r.eventTimeError) << ',' << number(r.meanEventTimeError) << ','
-          << optionalNumber(r.firstWrongTime) << ',' << number(r.energyDrift) << ','
-          << (r.horizonEvents ? std::to_string(*r.horizonEvents) : "") << ',' << optionalNumber(r.horizonTime)
-          << ',' << optionalNumber(r.convergenceError) << ',' << (onFront(front, i) ? 1 : 0) << '\n';
+          << ',' << r.collisions << ',' << r.referenceCollisions << ',' << r.matched << ',' << number(r.eventTimeError)
+          << ',' << number(r.meanEventTimeError) << ',' << optionalNumber(r.firstWrongTime) << ','
+          << number(r.energyDrift) << ',' << (r.horizonEvents ? std::to_string(*r.horizonEvents) : "") << ','
+          << optionalNumber(r.horizonTime) << ',' << optionalNumber(r.convergenceError) << ','
+          << (onFront(front, i) ? 1 : 0) << '\n';
     }
   }
   return out.str();
@@ -105,8 +105,8 @@ std::string studyJson(const StudyReport& report) {
     }
     nlohmann::ordered_json fails = nlohmann::ordered_json::object();
     if (s.scene.stress)
-      for (MethodFamily f : {MethodFamily::Ballistic, MethodFamily::Classic, MethodFamily::Box2d, MethodFamily::Box2dNoBullet,
-                             MethodFamily::Box2dV3, MethodFamily::Box2dV3NoBullet})
+      for (MethodFamily f : {MethodFamily::Ballistic, MethodFamily::Classic, MethodFamily::Box2d,
+                             MethodFamily::Box2dNoBullet, MethodFamily::Box2dV3, MethodFamily::Box2dV3NoBullet})
         fails[familyName(f)] = failsFrom(s, f);
     scenes.push_back({{"name", s.scene.name},
                       {"board", s.scene.board},

@@ -22,7 +22,7 @@ struct TracePoint {
   std::uint8_t ballCount = 0;  // the balls the event changed
   std::array<GizmoId, 2> ball{kNoGizmo, kNoGizmo};
   std::array<WideValue, 2> x, y;  // their positions
-  WideValue energy;  // the board's mechanical energy after the event
+  WideValue energy;               // the board's mechanical energy after the event
 };
 using Trace = std::vector<TracePoint>;
 
@@ -82,6 +82,7 @@ double timeRun(const RunRequest& request, std::uint64_t maxEvents, std::uint64_t
 // traceRun and timeRun at a precision chosen at run time (ladder.cpp).
 TracedRun traceAt(const PrecisionChoice& precision, const RunRequest& request, const Trace* reference, Trace* record,
                   std::size_t exactDigits, const TraceExtras& extras = {});
-double timeAt(const PrecisionChoice& precision, const RunRequest& request, std::uint64_t maxEvents, std::uint64_t& events);
+double timeAt(const PrecisionChoice& precision, const RunRequest& request, std::uint64_t maxEvents,
+              std::uint64_t& events);
 
 }  // namespace gizmo::verify

@@ -122,7 +122,9 @@ class TraceObserver final : public BoardObserver<Real> {
   }
 
   std::string describe(const TracePoint& p) const {
-    auto name = [&](GizmoId id) { return id >= 0 && std::size_t(id) < board_.gizmoCount() ? board_.gizmo(id).name() : std::string("-"); };
+    auto name = [&](GizmoId id) {
+      return id >= 0 && std::size_t(id) < board_.gizmoCount() ? board_.gizmo(id).name() : std::string("-");
+    };
     char time[32];
     std::snprintf(time, sizeof time, "%.17g", p.time.toDouble());
     std::string text = std::string(eventKindName(p.kind)) + " at " + time;
@@ -137,7 +139,8 @@ class TraceObserver final : public BoardObserver<Real> {
     agreement_.time = time;
     agreement_.difference = std::move(difference);
     // Nothing after the first difference is compared: stop the run at the next event.
-    if (extras_.stopAtDifference) board_.setRunLimit(typename GameBoard<Real>::RunLimit{board_.executedTotal(), std::nullopt});
+    if (extras_.stopAtDifference)
+      board_.setRunLimit(typename GameBoard<Real>::RunLimit{board_.executedTotal(), std::nullopt});
   }
 
   GameBoard<Real>& board_;
@@ -170,7 +173,8 @@ TracedRun traceRun(const RunRequest& request, const Trace* reference, Trace* rec
   try {
     continueRun(*board, request, 0);
   } catch (const IrrationalValue& e) {
-    result.stopped = "needs an irrational value after " + std::to_string(board->executedTotal()) + " events: " + e.what();
+    result.stopped =
+        "needs an irrational value after " + std::to_string(board->executedTotal()) + " events: " + e.what();
   } catch (const std::exception& e) {
     result.stopped = std::string("the run failed: ") + e.what();
   }
@@ -198,7 +202,7 @@ double timeRun(const RunRequest& request, std::uint64_t maxEvents, std::uint64_t
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-#define GIZMO_INSTANTIATE_TRACE_RUN(Real)                                                          \
+#define GIZMO_INSTANTIATE_TRACE_RUN(Real)                                                                      \
   template TracedRun traceRun<Real>(const RunRequest&, const Trace*, Trace*, std::size_t, const TraceExtras&); \
   template double timeRun<Real>(const RunRequest&, std::uint64_t, std::uint64_t&);
 

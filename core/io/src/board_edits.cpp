@@ -25,10 +25,8 @@ void BoardEdits::addBall(const std::string& written, BallSpec b, int line) {
 void BoardEdits::remove(const std::string& written) {
   const auto it = names_.find(written);
   const Ref r = it->second;
-  if (r.ball)
-    balls_.remove(r.index);
-  else
-    gizmos_.remove(r.index);
+  if (r.ball) balls_.remove(r.index);
+  else gizmos_.remove(r.index);
   names_.erase(it);
   taken_.erase(r.name);
   // Its connections go with it.

@@ -48,8 +48,8 @@ class LinkList {
 
  private:
   EditedList<T> links_;
-  std::vector<Key> keys_;                  // each link's key, by index
-  std::map<Key, std::size_t> live_;        // the live links by key
+  std::vector<Key> keys_;                                             // each link's key, by index
+  std::map<Key, std::size_t> live_;                                   // the live links by key
   std::unordered_map<std::string, std::vector<std::size_t>> naming_;  // links by the names of their ends
 };
 

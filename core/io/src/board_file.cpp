@@ -1,8 +1,8 @@
 #include "gizmo/io/board_file.hpp"
 
+#include "foreign_format.hpp"
 #include "gizmo/io/text_reader.hpp"
 #include "gizmo/io/xml_reader.hpp"
-#include "foreign_format.hpp"
 #include "parse_util.hpp"
 
 namespace gizmo::io {

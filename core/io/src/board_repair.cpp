@@ -39,8 +39,8 @@ void captureBallsInAbsorbers(BoardSpec& board, Reporter& rep) {
       const GizmoSpec& g = *a;
       const double x0 = g.x, y0 = g.y, x1 = g.x + g.width, y1 = g.y + g.height;
       if (b.x < x0 || b.x > x1 || b.y < y0 || b.y > y1) continue;
-      const bool wholly = b.x - kBallRadius >= x0 && b.x + kBallRadius <= x1 && b.y - kBallRadius >= y0 &&
-                          b.y + kBallRadius <= y1;
+      const bool wholly =
+          b.x - kBallRadius >= x0 && b.x + kBallRadius <= x1 && b.y - kBallRadius >= y0 && b.y + kBallRadius <= y1;
       if (wholly && b.vx == 0 && b.vy == 0) break;  // captured already
       const double x = std::clamp(b.x, x0 + kBallRadius, x1 - kBallRadius);
       const double y = std::clamp(b.y, y0 + kBallRadius, y1 - kBallRadius);
@@ -181,9 +181,10 @@ void convertPixelBalls(BoardSpec& board, Reporter& rep) {
     rep.lenient("ball-in-pixels", b->where,
                 "ball " + quote(b->name) + " at (" + num(was.x) + ", " + num(was.y) +
                     ") lies off the 20 L board, among gizmos placed in L; it is read as written in pixels at " +
-                    num(chosen) + " per L (the smallest of 20, 25, 30, 40 and 50 that puts every such ball of the "
-                    "file on the board, at a quarter of L): at (" + num(b->x) + ", " + num(b->y) +
-                    ") with velocity (" + num(b->vx) + ", " + num(b->vy) + ")");
+                    num(chosen) +
+                    " per L (the smallest of 20, 25, 30, 40 and 50 that puts every such ball of the "
+                    "file on the board, at a quarter of L): at (" +
+                    num(b->x) + ", " + num(b->y) + ") with velocity (" + num(b->vx) + ", " + num(b->vy) + ")");
   }
 }
 
@@ -234,7 +235,8 @@ void leaveOutWhatIsOffTheBoard(BoardSpec& board, Reporter& rep) {
       dropGizmos.insert(i);
       rep.lenient("off-board-exit", g.where,
                   "portal " + quote(g.name) + " has its exit at cell " + std::to_string(g.exitX) + "," +
-                      std::to_string(g.exitY) + ", which is not on the board (cells 0..19 in both); the portal is left out");
+                      std::to_string(g.exitY) +
+                      ", which is not on the board (cells 0..19 in both); the portal is left out");
       continue;
     }
     if (gizmoOnBoard(g) || g.width <= 0 || g.height <= 0) continue;
@@ -308,8 +310,8 @@ void repairPlacements(BoardSpec& board, Reporter& rep) {
       if (it != ballAt.end() && dropBalls.insert(it->second).second)
         rep.lenient("overlap-left-out", p.where, p.message + "; the ball is left out");
       else if (jt != gizmoAt.end() && dropGizmos.insert(jt->second).second)
-        rep.lenient("overlap-left-out", p.where, p.message + "; the " + gizmoTypeWord(board.gizmos[jt->second].type) +
-                                                     " is left out");
+        rep.lenient("overlap-left-out", p.where,
+                    p.message + "; the " + gizmoTypeWord(board.gizmos[jt->second].type) + " is left out");
     }
     if (dropBalls.empty() && dropGizmos.empty()) return;
     leaveOut(board, dropBalls, dropGizmos, rep);

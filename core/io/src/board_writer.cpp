@@ -28,9 +28,7 @@ std::string xmlEscaped(const std::string& s) {
 
 const char* direction(KeyDirection d) { return d == KeyDirection::Down ? "down" : "up"; }
 
-std::string attr(const char* name, const std::string& value) {
-  return std::string(" ") + name + "=\"" + value + "\"";
-}
+std::string attr(const char* name, const std::string& value) { return std::string(" ") + name + "=\"" + value + "\""; }
 
 }  // namespace
 
@@ -58,8 +56,8 @@ std::string writeXmlBoard(const BoardSpec& board) {
   out += "  </gizmos>\n";
   out += "  <connections>\n";
   for (const ConnectSpec& c : board.connections)
-    out += "    <connect" + attr("sourceGizmo", xmlEscaped(c.source)) + attr("targetGizmo", xmlEscaped(c.target)) +
-           "/>\n";
+    out +=
+        "    <connect" + attr("sourceGizmo", xmlEscaped(c.source)) + attr("targetGizmo", xmlEscaped(c.target)) + "/>\n";
   for (const KeyConnectSpec& k : board.keyConnections)
     out += "    <keyConnect" + attr("key", std::to_string(k.key)) + attr("keyDirection", direction(k.direction)) +
            attr("targetGizmo", xmlEscaped(k.target)) + "/>\n";
@@ -73,7 +71,8 @@ std::string writeTextBoard(const BoardSpec& board) {
   out += "Gravity " + shortest(board.gravity) + "\n";
   out += "Friction " + shortest(board.mu) + " " + shortest(board.mu2) + "\n";
   for (const GizmoSpec& g : board.gizmos) {
-    out += std::string(gizmoKind(g.type).textCommand) + " " + g.name + " " + std::to_string(g.x) + " " + std::to_string(g.y);
+    out += std::string(gizmoKind(g.type).textCommand) + " " + g.name + " " + std::to_string(g.x) + " " +
+           std::to_string(g.y);
     if (g.type == GizmoType::Absorber)
       out += " " + std::to_string(static_cast<long long>(g.x) + g.width) + " " +
              std::to_string(static_cast<long long>(g.y) + g.height);

@@ -73,8 +73,8 @@ std::optional<std::string> foreignFormat(std::string_view content) {
     // kll0125's "AbsorberGizmo NAME X Y W H" in pixels): the geometry means something else.
     if (anyWordIs(line, {"squarebumper", "circlebumper", "trianglebumper", "trapezoidbumper", "absorbergizmo",
                          "connectgizmo", "connectkeydown"}))
-      return "this looks like a board of another Gizmoball dialect (" + quote(line[0]) +
-             " with its own coordinates)" + kNot;
+      return "this looks like a board of another Gizmoball dialect (" + quote(line[0]) + " with its own coordinates)" +
+             kNot;
     bool numbersOnly = line.size() >= 5 && line.size() <= 6;
     for (std::size_t i = 1; numbersOnly && i < line.size(); ++i) numbersOnly = isNumber(line[i]);
     if (!numbersOnly || isNumber(line[0])) allPixelShaped = false;

@@ -16,15 +16,15 @@ struct NamedKey {
 // KeyA, Digit1, ShiftLeft) give keys, once lower-cased, stripped of '_' and '-' and of the prefixes
 // and sides keyCodeOfName takes off.
 constexpr NamedKey kNamedKeys[] = {
-    {"backspace", 8},     {"tab", 9},           {"enter", 10},       {"return", 10},        {"shift", 16},
-    {"ctrl", 17},         {"control", 17},      {"alt", 18},         {"pause", 19},         {"caps", 20},
-    {"capslock", 20},     {"esc", 27},          {"escape", 27},      {"space", 32},         {"spacebar", 32},
-    {"pageup", 33},       {"pagedown", 34},     {"end", 35},         {"home", 36},          {"left", 37},
-    {"up", 38},           {"right", 39},        {"down", 40},        {"comma", 44},         {"minus", 45},
-    {"period", 46},       {"slash", 47},        {"semicolon", 59},   {"equals", 61},        {"equal", 61},
-    {"openbracket", 91},  {"bracketleft", 91},  {"backslash", 92},   {"closebracket", 93},  {"bracketright", 93},
-    {"multiply", 106},    {"add", 107},         {"subtract", 109},   {"decimal", 110},      {"divide", 111},
-    {"delete", 127},      {"insert", 155},      {"backquote", 192},  {"quote", 222},
+    {"backspace", 8},    {"tab", 9},          {"enter", 10},      {"return", 10},       {"shift", 16},
+    {"ctrl", 17},        {"control", 17},     {"alt", 18},        {"pause", 19},        {"caps", 20},
+    {"capslock", 20},    {"esc", 27},         {"escape", 27},     {"space", 32},        {"spacebar", 32},
+    {"pageup", 33},      {"pagedown", 34},    {"end", 35},        {"home", 36},         {"left", 37},
+    {"up", 38},          {"right", 39},       {"down", 40},       {"comma", 44},        {"minus", 45},
+    {"period", 46},      {"slash", 47},       {"semicolon", 59},  {"equals", 61},       {"equal", 61},
+    {"openbracket", 91}, {"bracketleft", 91}, {"backslash", 92},  {"closebracket", 93}, {"bracketright", 93},
+    {"multiply", 106},   {"add", 107},        {"subtract", 109},  {"decimal", 110},     {"divide", 111},
+    {"delete", 127},     {"insert", 155},     {"backquote", 192}, {"quote", 222},
 };
 
 bool startsWith(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
@@ -51,8 +51,8 @@ std::optional<int> numbered(std::string_view s, std::string_view prefix, int low
 
 std::optional<int> plainName(std::string_view s) {
   if (const std::optional<int> c = letterOrDigit(s)) return c;
-  if (const std::optional<int> f = numbered(s, "f", 1, 12, 112)) return f;      // F1 .. F12
-  if (const std::optional<int> n = numbered(s, "numpad", 0, 9, 96)) return n;   // NUMPAD0 .. NUMPAD9
+  if (const std::optional<int> f = numbered(s, "f", 1, 12, 112)) return f;     // F1 .. F12
+  if (const std::optional<int> n = numbered(s, "numpad", 0, 9, 96)) return n;  // NUMPAD0 .. NUMPAD9
   for (const NamedKey& k : kNamedKeys)
     if (k.name == s) return k.code;
   return std::nullopt;
@@ -66,11 +66,11 @@ std::optional<int> keyCodeOfName(std::string_view name) {
     if (c != '_' && c != '-') s += c;
   if (const std::optional<int> c = plainName(s)) return c;
   std::string_view v = s;
-  if (startsWith(v, "vk")) v.remove_prefix(2);           // Java: VK_LEFT
+  if (startsWith(v, "vk")) v.remove_prefix(2);                           // Java: VK_LEFT
   else if (startsWith(v, "key") && v.size() == 4) v.remove_prefix(3);    // browsers' codes: KeyA
   else if (startsWith(v, "digit") && v.size() == 6) v.remove_prefix(5);  // JavaFX and browsers: DIGIT1
-  else if (startsWith(v, "arrow")) v.remove_prefix(5);   // browsers: ArrowLeft
-  for (const std::string_view side : {"left", "right"})  // browsers' codes: ShiftLeft, ControlRight
+  else if (startsWith(v, "arrow")) v.remove_prefix(5);                   // browsers: ArrowLeft
+  for (const std::string_view side : {"left", "right"})                  // browsers' codes: ShiftLeft, ControlRight
     if (v.size() > side.size() && v.substr(v.size() - side.size()) == side) {
       const std::string_view base = v.substr(0, v.size() - side.size());
       if (base == "shift" || base == "control" || base == "alt") return plainName(base);

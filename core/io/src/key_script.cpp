@@ -10,7 +10,6 @@ namespace {
 
 using namespace detail;
 
-
 }  // namespace
 
 std::vector<KeyInput> readKeyScript(std::string_view content, const std::string& fileName) {
@@ -94,8 +93,6 @@ std::vector<KeyInput> readKeyScript(std::string_view content, const std::string&
   return inputs;
 }
 
-std::vector<KeyInput> readKeyScriptFile(const std::string& path) {
-  return readKeyScript(readWholeFile(path), path);
-}
+std::vector<KeyInput> readKeyScriptFile(const std::string& path) { return readKeyScript(readWholeFile(path), path); }
 
 }  // namespace gizmo::io

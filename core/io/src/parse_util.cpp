@@ -19,9 +19,7 @@ std::string toLowerAscii(std::string_view s) {
 
 namespace {
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isNameChar(char c) {
-  return isDigit(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
-}
+bool isNameChar(char c) { return isDigit(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; }
 
 // The decimal grammar: [+-]? (D+ (. D*)? | . D+) ([eE] [+-]? D+)?
 bool decimalSyntax(std::string_view s) {
@@ -60,8 +58,7 @@ std::string controlCharacterProblem(unsigned char c) {
 std::string nameProblem(std::string_view name) {
   if (name.empty()) return "a name cannot be empty";
   for (char c : name)
-    if (!isNameChar(c))
-      return show(name) + " is not a valid name: names use only letters, digits and _";
+    if (!isNameChar(c)) return show(name) + " is not a valid name: names use only letters, digits and _";
   return {};
 }
 
@@ -76,10 +73,8 @@ Number parseDecimal(std::string_view token, const std::string& what) {
     const std::string_view unsigned_ = std::string_view(lower).substr(lower[0] == '+' || lower[0] == '-' ? 1 : 0);
     if (unsigned_ == "nan" || unsigned_ == "inf" || unsigned_ == "infinity")
       n.problem = what + " must be a finite number, not " + show(token);
-    else if (unsigned_.substr(0, 2) == "0x")
-      n.problem = what + " must be a decimal number, not " + show(token);
-    else
-      n.problem = what + " must be a number, not " + show(token);
+    else if (unsigned_.substr(0, 2) == "0x") n.problem = what + " must be a decimal number, not " + show(token);
+    else n.problem = what + " must be a number, not " + show(token);
     return n;
   }
   // std::from_chars (parseDecimalDouble) takes no leading '+'.

@@ -16,7 +16,7 @@ enum class AdditionKind {
 };
 
 struct Addition {
-  std::string_view word;     // as its program spells it (matched without regard to case)
+  std::string_view word;  // as its program spells it (matched without regard to case)
   AdditionKind kind;
   std::string_view what;     // plain words for the warning: "a ball sink"
   std::string_view program;  // where it comes from (docs/board-files.md gives file and line)

@@ -41,18 +41,18 @@ enum class DialectStage {
 // What the reader does when a row recognises its input; after it, the reader goes on unless the
 // outcome ends the line.
 enum class DialectOutcome {
-  Skip,             // FileStart: `value` bytes at the start are not part of the board
-  StripLineEnd,     // LineEnd: `value` bytes at the end are the line end
-  IgnoreLine,       // the line is ignored
-  AsAddition,       // the line is another program's command: `addition`
-  ReadOn,           // the line is read as the format (the words the row is about are ignored)
+  Skip,                         // FileStart: `value` bytes at the start are not part of the board
+  StripLineEnd,                 // LineEnd: `value` bytes at the end are the line end
+  IgnoreLine,                   // the line is ignored
+  AsAddition,                   // the line is another program's command: `addition`
+  ReadOn,                       // the line is read as the format (the words the row is about are ignored)
   ReadOnUnlessConsumerLeftOut,  // ReadOn, unless the consumer (token 2) is left out: then the line is
-  LeaveOutName,     // the line is left out, and so are the later commands that name token 1
-  LeaveOutNewName,  // the same, unless an object of that name exists (it is not replaced)
-  UseValue,         // the number is read as `value`
-  LeaveOutConnection,  // the connection is left out
-  DownAndUp,        // the key connection is read as two, down and up
-  MakeAtEnd,        // the connection is made at the end of the file, when what it names exists
+  LeaveOutName,                 // the line is left out, and so are the later commands that name token 1
+  LeaveOutNewName,              // the same, unless an object of that name exists (it is not replaced)
+  UseValue,                     // the number is read as `value`
+  LeaveOutConnection,           // the connection is left out
+  DownAndUp,                    // the key connection is read as two, down and up
+  MakeAtEnd,                    // the connection is made at the end of the file, when what it names exists
 };
 
 enum class CommandRole { Gizmo, Absorber, Ball, Connect, Other };
@@ -76,8 +76,8 @@ struct DialectInput {
 
 struct DialectReading {
   DialectOutcome outcome = DialectOutcome::ReadOn;
-  std::string kind;     // the warning's kind: one warning per kind and file
-  int column = 0;       // where the warning points, on the reader's line (1 on FileStart)
+  std::string kind;  // the warning's kind: one warning per kind and file
+  int column = 0;    // where the warning points, on the reader's line (1 on FileStart)
   std::string message;
   long long value = 0;
   const Addition* addition = nullptr;

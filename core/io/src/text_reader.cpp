@@ -10,11 +10,11 @@
 
 #include "board_edits.hpp"
 #include "board_repair.hpp"
+#include "foreign_format.hpp"
 #include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/core/gizmo_kinds.hpp"
 #include "key_names.hpp"
 #include "parse_util.hpp"
-#include "foreign_format.hpp"
 #include "text_additions.hpp"
 #include "text_dialects.hpp"
 
@@ -62,15 +62,13 @@ const CommandInfo* findCommand(std::string_view word) {
   return nullptr;
 }
 
-
 class TextReader {
  public:
   TextReader(std::string_view content, Reporter& rep) : content_(content), rep_(rep) {}
 
   BoardSpec run() {
     std::size_t pos = 0;
-    if (const std::optional<DialectReading> r =
-            readDialect(DialectStage::FileStart, DialectInput{.text = content_})) {
+    if (const std::optional<DialectReading> r = readDialect(DialectStage::FileStart, DialectInput{.text = content_})) {
       rep_.lenient(r->kind, SourcePos{1, r->column}, r->message);
       pos = static_cast<std::size_t>(r->value);  // DialectOutcome::Skip, the only one of this stage
     }
@@ -194,9 +192,9 @@ class TextReader {
       return;
     }
     const Token& extra = t[cmd.tokens];
-    rep_.error(at(extra), "unexpected " + quote(extra.text) + " after the end of the command: " +
-                              std::string(cmd.usage) + " takes " + std::to_string(cmd.tokens - 1) + " value" +
-                              (cmd.tokens == 2 ? "" : "s") +
+    rep_.error(at(extra), "unexpected " + quote(extra.text) +
+                              " after the end of the command: " + std::string(cmd.usage) + " takes " +
+                              std::to_string(cmd.tokens - 1) + " value" + (cmd.tokens == 2 ? "" : "s") +
                               (extra.text[0] == '#' ? " (comments must be on a line of their own)" : ""));
   }
 
@@ -218,9 +216,10 @@ class TextReader {
     const bool names = t.size() >= 2 && !edits_.find(std::string(t[1].text)) &&
                        !leftOut_.count(std::string(t[1].text)) && nameProblem(t[1].text).empty();
     rep_.lenient("unknown-command:" + toLowerAscii(t[0].text), at(t[0]),
-                 quote(t[0].text) + " is not a command of the Gizmoball format (Square, Circle, Triangle, "
-                 "LeftFlipper, RightFlipper, Absorber, Ball, Rotate, Delete, Move, Connect, KeyConnect, Gravity, "
-                 "Friction) nor another program's that this reader knows; the line is left out" +
+                 quote(t[0].text) +
+                     " is not a command of the Gizmoball format (Square, Circle, Triangle, "
+                     "LeftFlipper, RightFlipper, Absorber, Ball, Rotate, Delete, Move, Connect, KeyConnect, Gravity, "
+                     "Friction) nor another program's that this reader knows; the line is left out" +
                      (names ? ", and so are the commands that name " + quote(t[1].text) : std::string()));
     if (names) leftOut_[std::string(t[1].text)] = std::string(t[0].text);
   }
@@ -526,9 +525,9 @@ class TextReader {
   }
 
   void repeated(SourcePos where, SourcePos first) {
-    rep_.lenient("duplicate-connection", where,
-                 "this connection repeats the one on line " + std::to_string(first.line) +
-                     "; the repetition is ignored");
+    rep_.lenient(
+        "duplicate-connection", where,
+        "this connection repeats the one on line " + std::to_string(first.line) + "; the repetition is ignored");
   }
 
   // The key code of a KeyConnect: a whole number, or a key's name as programs write it (Java's,
@@ -589,8 +588,7 @@ class TextReader {
     for (const KeyDirection d : directions) {
       if (target->empty())
         deferred_.push_back(Deferred{{}, std::string(t[4].text), static_cast<int>(key), d, at(t[0]), true, *later});
-      else
-        addKeyConnect(KeyConnectSpec{static_cast<int>(key), d, *target, at(t[0])});
+      else addKeyConnect(KeyConnectSpec{static_cast<int>(key), d, *target, at(t[0])});
     }
   }
 
@@ -619,10 +617,8 @@ class TextReader {
         continue;
       }
       rep_.lenient(d.later.kind, d.where, d.later.message);
-      if (d.key)
-        addKeyConnect(KeyConnectSpec{d.code, d.direction, target, d.where});
-      else
-        addConnect(ConnectSpec{source, target, d.where});
+      if (d.key) addKeyConnect(KeyConnectSpec{d.code, d.direction, target, d.where});
+      else addConnect(ConnectSpec{source, target, d.where});
     }
   }
 
@@ -656,9 +652,10 @@ class TextReader {
 
   BoardSpec finish() {
     if (commandLines_ == 0 && firstUnknown_) {
-      rep_.error(firstUnknown_->at, "no line of this file is a command of the Gizmoball format (the first line's "
-                                    "word is " + quote(firstUnknown_->word) +
-                                        "); it does not look like a Gizmoball board");
+      rep_.error(firstUnknown_->at,
+                 "no line of this file is a command of the Gizmoball format (the first line's "
+                 "word is " +
+                     quote(firstUnknown_->word) + "); it does not look like a Gizmoball board");
       return BoardSpec{};
     }
     for (Unresolved& u : unresolved_) {
@@ -692,8 +689,8 @@ class TextReader {
   Reporter& rep_;
   int line_ = 0;
 
-  BoardEdits edits_;  // what the file creates, as later lines edit it
-  std::unordered_map<std::string, std::string> leftOut_;  // names of left-out additions → their word
+  BoardEdits edits_;                                                   // what the file creates, as later lines edit it
+  std::unordered_map<std::string, std::string> leftOut_;               // names of left-out additions → their word
   std::unordered_map<std::string, std::vector<std::size_t>> pending_;  // unresolved_ entries by name
   std::unordered_set<std::string> failed_;  // names whose statement failed: no second error about them
   struct Unknown {

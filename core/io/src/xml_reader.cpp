@@ -11,8 +11,8 @@
 
 #include <pugixml.hpp>
 
-#include "gizmo/core/board_spec_check.hpp"
 #include "board_repair.hpp"
+#include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/core/gizmo_kinds.hpp"
 #include "parse_util.hpp"
 
@@ -60,7 +60,6 @@ struct Attr {
   SourcePos at;
 };
 
-
 // " (did you mean <squareBumper>?)" when name differs from one of known only in case.
 std::string caseHint(std::string_view name, const std::vector<std::string_view>& known) {
   const std::string lower = toLowerAscii(name);
@@ -97,12 +96,13 @@ class XmlReader {
         if (!root) {
           root = n;
           if (std::string_view(n.name()) != "board") {
-            rep_.error(elementAt(n), "the root element is " + tag(n.name()) + "; a board file's root element is <board>");
+            rep_.error(elementAt(n),
+                       "the root element is " + tag(n.name()) + "; a board file's root element is <board>");
             rep_.throwErrors();
           }
         } else {
-          rep_.error(elementAt(n), "a second root element " + tag(n.name()) +
-                                       ": a board file has exactly one root element, <board>");
+          rep_.error(elementAt(n),
+                     "a second root element " + tag(n.name()) + ": a board file has exactly one root element, <board>");
         }
       } else if (n.type() == pugi::node_pcdata || n.type() == pugi::node_cdata) {
         textError(n, "outside the <board> element");
@@ -114,8 +114,9 @@ class XmlReader {
     }
     readBoard(root);
     if (schemaElements_ == 0 && leftOutElements_ > 0 && !rep_.failed()) {
-      rep_.error(elementAt(root), "no element of this <board> is one of the board schema's; it does not look like a "
-                                  "Gizmoball board");
+      rep_.error(elementAt(root),
+                 "no element of this <board> is one of the board schema's; it does not look like a "
+                 "Gizmoball board");
       return std::move(board_);
     }
     dropConnectionsTo(board_, leftOut_, rep_);
@@ -186,10 +187,8 @@ class XmlReader {
   // Leaf elements hold nothing.
   void expectEmpty(const pugi::xml_node& e) {
     for (pugi::xml_node c : e.children()) {
-      if (c.type() == pugi::node_element)
-        rep_.error(elementAt(c), tag(e.name()) + " cannot contain " + tag(c.name()));
-      else if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata)
-        textError(c, "inside " + tag(e.name()));
+      if (c.type() == pugi::node_element) rep_.error(elementAt(c), tag(e.name()) + " cannot contain " + tag(c.name()));
+      else if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) textError(c, "inside " + tag(e.name()));
     }
   }
 
@@ -232,10 +231,8 @@ class XmlReader {
     if (auto it = attrs.find("gravity"); it != attrs.end()) {
       double g = 0;
       if (decimal(it->second, "gravity", g)) {
-        if (std::string p = gravityProblem(g); !p.empty())
-          rep_.error(it->second.at, p);
-        else
-          board_.gravity = g;
+        if (std::string p = gravityProblem(g); !p.empty()) rep_.error(it->second.at, p);
+        else board_.gravity = g;
       }
     }
     const std::pair<const char*, double BoardSpec::*> frictions[] = {{"friction1", &BoardSpec::mu},
@@ -245,10 +242,8 @@ class XmlReader {
         const std::string which = member == &BoardSpec::mu ? "mu (friction1)" : "mu2 (friction2)";
         double v = 0;
         if (decimal(it->second, "friction " + which, v)) {
-          if (std::string p = frictionProblem(which, v); !p.empty())
-            rep_.error(it->second.at, p);
-          else
-            board_.*member = v;
+          if (std::string p = frictionProblem(which, v); !p.empty()) rep_.error(it->second.at, p);
+          else board_.*member = v;
         }
       }
     }
@@ -271,9 +266,11 @@ class XmlReader {
         readBall(c);
       } else if (n == "gizmos") {
         if (sawGizmos)
-          rep_.lenient("repeat", elementAt(c), "a second <gizmos> element: the schema has one (its gizmos are read too)");
+          rep_.lenient("repeat", elementAt(c),
+                       "a second <gizmos> element: the schema has one (its gizmos are read too)");
         else if (phase == 2)
-          rep_.lenient("order", elementAt(c), "<gizmos> after <connections>: the schema puts the gizmos first (read anyway)");
+          rep_.lenient("order", elementAt(c),
+                       "<gizmos> after <connections>: the schema puts the gizmos first (read anyway)");
         sawGizmos = true;
         phase = std::max(phase, 1);
         readGizmos(c);
@@ -285,12 +282,13 @@ class XmlReader {
         phase = 2;
         readConnections(c);
       } else {
-        leaveOutElement(c, "<board>", "it holds <ball>, <gizmos> and <connections>" +
-                                          caseHint(n, {"ball", "gizmos", "connections"}));
+        leaveOutElement(c, "<board>",
+                        "it holds <ball>, <gizmos> and <connections>" + caseHint(n, {"ball", "gizmos", "connections"}));
       }
     }
     if (!sawGizmos)
-      rep_.lenient("missing-gizmos", elementAt(board), "the board has no <gizmos> element; the schema requires one (read as empty)");
+      rep_.lenient("missing-gizmos", elementAt(board),
+                   "the board has no <gizmos> element; the schema requires one (read as empty)");
     if (!sawConnections)
       rep_.lenient("missing-connections", elementAt(board),
                    "the board has no <connections> element; the schema requires one (read as empty)");
@@ -331,7 +329,8 @@ class XmlReader {
                            " in the schema; gizmo elements are read without regard to case");
       }
       if (!kind) {
-        leaveOutElement(c, "<gizmos>", "the gizmos are " + gizmoElementList() + caseHint(c.name(), gizmoElementNames()));
+        leaveOutElement(c, "<gizmos>",
+                        "the gizmos are " + gizmoElementList() + caseHint(c.name(), gizmoElementNames()));
         continue;
       }
       readGizmo(c, kind->type);
@@ -389,7 +388,8 @@ class XmlReader {
       } else if (n == "keyConnect") {
         readKeyConnect(c);
       } else {
-        leaveOutElement(c, "<connections>", "it holds <connect> and <keyConnect>" + caseHint(n, {"connect", "keyConnect"}));
+        leaveOutElement(c, "<connections>",
+                        "it holds <connect> and <keyConnect>" + caseHint(n, {"connect", "keyConnect"}));
       }
     }
   }
@@ -457,8 +457,9 @@ class XmlReader {
   }
 
   void duplicate(const SourcePos& at, const SourcePos& first) {
-    rep_.lenient("duplicate-connection", at,
-                 "this connection repeats the one on line " + std::to_string(first.line) + "; the repetition is ignored");
+    rep_.lenient(
+        "duplicate-connection", at,
+        "this connection repeats the one on line " + std::to_string(first.line) + "; the repetition is ignored");
   }
 
   std::string_view content_;
@@ -467,9 +468,9 @@ class XmlReader {
   BoardSpec board_;
   std::map<std::pair<std::string, std::string>, SourcePos> connections_;
   std::map<std::tuple<int, int, std::string>, SourcePos> keyConnections_;
-  std::set<std::string> leftOut_;      // the names of elements left out
+  std::set<std::string> leftOut_;  // the names of elements left out
   std::size_t leftOutElements_ = 0;
-  std::size_t schemaElements_ = 0;     // <ball>, <gizmos> and <connections> in <board>
+  std::size_t schemaElements_ = 0;  // <ball>, <gizmos> and <connections> in <board>
 };
 
 }  // namespace

@@ -42,7 +42,8 @@ template <class Real>
 GizmoId GameBoard<Real>::addSpawnedBall(const Vec2<Real>& p) {
   std::vector<std::string> names;
   for (std::size_t g = 0; g < gizmos_.size() - spawned_; ++g) names.push_back(gizmos_[g]->name());
-  auto ball = std::make_unique<Ball<Real>>(spawnedBallName(static_cast<long long>(gizmos_.size()), names), p, Vec2<Real>());
+  auto ball =
+      std::make_unique<Ball<Real>>(spawnedBallName(static_cast<long long>(gizmos_.size()), names), p, Vec2<Real>());
   ball->setState(now_, p, Vec2<Real>(), params_);
   ++spawned_;
   return join(std::move(ball));

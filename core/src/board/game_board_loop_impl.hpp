@@ -181,11 +181,8 @@ void GameBoard<Real>::applyEvent(const Event<Real>& e) {
       for (GizmoId target : triggers_.keyTargets(e.feature, dir)) performAction(target);
       break;
     }
-    case EventKind::Recalculate:
-      recompute_.push_back(e.a);
-      break;
-    case EventKind::EndOfTick:
-      break;
+    case EventKind::Recalculate: recompute_.push_back(e.a); break;
+    case EventKind::EndOfTick: break;
   }
   wakeWhatRestsOnStarted();
 }

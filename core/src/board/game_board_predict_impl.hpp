@@ -37,10 +37,8 @@ void GameBoard<Real>::recomputePending() {
     const std::size_t i = static_cast<std::size_t>(g);
     stamp_[i] = stampNow_;  // marks membership of `todo`
     if (Ball<Real>* b = gizmos_[i]->asBall()) {
-      if (b->captured() || b->resting())
-        sweepBall(g, infinity());
-      else if (!untilNextEvent)
-        sweepBall(g, ballHorizon(*b));
+      if (b->captured() || b->resting()) sweepBall(g, infinity());
+      else if (!untilNextEvent) sweepBall(g, ballHorizon(*b));
     } else {
       const std::optional<Real> until = gizmos_[i]->predictionHorizon();
       validUntil_[i] = until ? *until : infinity();
@@ -89,8 +87,7 @@ void GameBoard<Real>::sweepBall(GizmoId id, const Real& until) {
   if (until < infinity())
     boxes_[i] = sweptBox(b.trajectoryAt(now_), Real(until - now_), Ball<Real>::radius(),
                          fromDouble<Real>(detail::kBroadPhaseMargin));
-  else
-    boxes_[i] = b.bounds();
+  else boxes_[i] = b.bounds();
   broadPhase_.placeBall(id, boxes_[i], !b.captured());
 }
 

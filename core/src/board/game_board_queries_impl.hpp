@@ -92,9 +92,8 @@ bool GameBoard<Real>::cradled(GizmoId ball, const Vec2<Real>& p, const Vec2<Real
   const Vec2<Real> gravity(Real(0), params_.gravity);
   const Real r = Ball<Real>::radius();
   const Real rise = params_.restSpeed * params_.restSpeed / (Real(2) * absOf(params_.gravity));
-  if (stillFeatureNear(p, rise, by, [&](const Vec2<Real>& towardsBall) {
-        return gravityHeldBetween(towardsBall, normal, gravity);
-      }))
+  if (stillFeatureNear(p, rise, by,
+                       [&](const Vec2<Real>& towardsBall) { return gravityHeldBetween(towardsBall, normal, gravity); }))
     return true;
   // Between two balls at rest the reach is settleRise: no gizmo's action is in the V, and the
   // V of two balls of a floor row is so flat that a ball falling into it strikes one side, then

@@ -41,8 +41,7 @@ void GameBoard<Real>::checkRestoredEvent(const Event<Real>& e, const BoardState<
       if (!isGizmoId(e.a) || !isGizmoId(e.b) || e.a == e.b) fail("not a pair of gizmos");
       const GizmoId ball = isBallId(e.a) ? e.a : e.b, other = ball == e.a ? e.b : e.a;
       if (!isBallId(ball)) fail("no ball involved");
-      if (colliderOf(ball, other) != e.a)
-        fail("not the collider of a formed pair");
+      if (colliderOf(ball, other) != e.a) fail("not the collider of a formed pair");
       break;
     }
     case EventKind::Leave:
@@ -56,7 +55,7 @@ void GameBoard<Real>::checkRestoredEvent(const Event<Real>& e, const BoardState<
       break;
     case EventKind::FlipperStop: {
       const bool flipper = isGizmoId(e.a) && (gizmos_[std::size_t(e.a)]->kind() == GizmoKind::LeftFlipper ||
-                                            gizmos_[std::size_t(e.a)]->kind() == GizmoKind::RightFlipper);
+                                              gizmos_[std::size_t(e.a)]->kind() == GizmoKind::RightFlipper);
       if (!flipper) fail("not a flipper");
       break;
     }

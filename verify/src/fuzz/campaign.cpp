@@ -84,7 +84,8 @@ class GeneratedSource final : public CaseSource {
   Case make(std::uint64_t campaignSeed, std::uint64_t index) const override { return {caseRun(campaignSeed, index)}; }
   Shrunk shrink(std::uint64_t, std::uint64_t, const RunRequest& failing, const Fails& fails,
                 std::size_t budget) const override {
-    const Minimised m = minimise(failing, [&](const RunRequest& r) { return fails(r, Precision::Double); }, budget);
+    const Minimised m = minimise(
+        failing, [&](const RunRequest& r) { return fails(r, Precision::Double); }, budget);
     return {m.run, Precision::Double, m.steps, ""};
   }
   std::string describe() const override { return "generated"; }
@@ -132,14 +133,15 @@ std::string VariationSource::describe() const {
 }
 
 CampaignResult runCampaign(const CampaignOptions& o) {
-  if (o.shards == 0 || o.shard >= o.shards) throw CampaignError("shard " + std::to_string(o.shard) + " of " +
-                                                                 std::to_string(o.shards) + " does not exist");
+  if (o.shards == 0 || o.shard >= o.shards)
+    throw CampaignError("shard " + std::to_string(o.shard) + " of " + std::to_string(o.shards) + " does not exist");
   const CaseSource& source = o.source ? *o.source : generatedCases();
   CampaignResult result;
   result.cases = source.describe();
   result.seed = o.seed;
   result.count = o.count;
-  for (const Property* p : o.properties) result.properties += (result.properties.empty() ? "" : ",") + std::string(p->name);
+  for (const Property* p : o.properties)
+    result.properties += (result.properties.empty() ? "" : ",") + std::string(p->name);
   result.shards = o.shards;
   result.shardsIncluded = {o.shard};
 
@@ -216,7 +218,8 @@ CampaignResult runCampaign(const CampaignOptions& o) {
 }
 
 std::uint64_t failureCount(const CampaignResult& r) {
-  return std::uint64_t(std::count_if(r.outcomes.begin(), r.outcomes.end(), [](const CaseOutcome& c) { return !c.holds; }));
+  return std::uint64_t(
+      std::count_if(r.outcomes.begin(), r.outcomes.end(), [](const CaseOutcome& c) { return !c.holds; }));
 }
 
 std::uint64_t casesChecked(const CampaignResult& r) {
@@ -263,8 +266,8 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
   fs::create_directories(dir, ec);
   if (ec) throw CampaignError("cannot create " + dir + ": " + ec.message());
   std::ostringstream results;
-  results << kResultsMagic << "\ncases " << r.cases << "\nseed " << r.seed << "\ncount " << r.count
-          << "\nproperties " << r.properties << "\nshards " << r.shards << "\nshard";
+  results << kResultsMagic << "\ncases " << r.cases << "\nseed " << r.seed << "\ncount " << r.count << "\nproperties "
+          << r.properties << "\nshards " << r.shards << "\nshard";
   for (std::uint64_t s : r.shardsIncluded) results << ' ' << s;
   results << "\ncomplete " << (r.complete ? "yes" : "no") << "\n";
   for (CaseOutcome& c : r.outcomes) {
@@ -298,16 +301,14 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
       if (!logStopped.empty())
         logStopped = "\nrun.gzlog stops where the run stopped its recording (" + logStopped +
                      "): it holds the run up to its last complete chunk.\n";
-      const std::string command = gizmo + " fuzz --property " + c.property + " --check " +
-                                  quoted((folder / "board.xml").string()) + " --keys " +
-                                  quoted((folder / "keys.txt").string()) + " --model " +
-                                  std::string(motionModelName(c.minimal.model)) + " --max-tick " +
-                                  shortest(c.minimal.maxTick) + " --time " + shortest(c.minimal.duration) +
-                                  (c.scalar == Precision::LongDouble ? " --precision long-double" : "") +
-                                  (expectFile.empty() ? "" : " --expect " + quoted(expectFile));
+      const std::string command =
+          gizmo + " fuzz --property " + c.property + " --check " + quoted((folder / "board.xml").string()) +
+          " --keys " + quoted((folder / "keys.txt").string()) + " --model " +
+          std::string(motionModelName(c.minimal.model)) + " --max-tick " + shortest(c.minimal.maxTick) + " --time " +
+          shortest(c.minimal.duration) + (c.scalar == Precision::LongDouble ? " --precision long-double" : "") +
+          (expectFile.empty() ? "" : " --expect " + quoted(expectFile));
       writeFile(folder / "command.txt", command + "\n");
-      const std::string departure =
-          c.departure.empty() ? "" : "departure from the run given: " + c.departure + "\n";
+      const std::string departure = c.departure.empty() ? "" : "departure from the run given: " + c.departure + "\n";
       if (!departure.empty()) writeFile(folder / "departure.txt", c.departure + "\n");
       writeFile(folder / "failure.txt", "property " + c.property + ", case " + std::to_string(c.index) + " (seed " +
                                             hex(c.seed) + ", size " + std::to_string(c.size) + "), shrunk in " +
@@ -320,7 +321,8 @@ void writeCampaign(CampaignResult& r, const std::string& dir, const std::string&
   }
   // Written aside and renamed into place, so that a task killed while writing leaves no
   // results.txt (the merge then names the folder) rather than one cut short.
-  const fs::path final = fs::path(dir) / kResultsFile, partial = fs::path(dir) / (std::string(kResultsFile) + ".partial");
+  const fs::path final = fs::path(dir) / kResultsFile,
+                 partial = fs::path(dir) / (std::string(kResultsFile) + ".partial");
   writeFile(partial, results.str());
   fs::rename(partial, final, ec);
   if (ec) throw CampaignError("cannot write " + final.string() + ": " + ec.message());
@@ -339,7 +341,8 @@ CampaignResult readCampaign(const std::string& dir) {
   };
   auto header = [&](const char* key) {
     ++lineNo;
-    if (!std::getline(in, line) || line.rfind(std::string(key) + " ", 0) != 0) throw bad(std::string("expected '") + key + " …'");
+    if (!std::getline(in, line) || line.rfind(std::string(key) + " ", 0) != 0)
+      throw bad(std::string("expected '") + key + " …'");
     return line.substr(std::string(key).size() + 1);
   };
   auto number = [&](const std::string& s, int base = 10) {
@@ -349,7 +352,8 @@ CampaignResult readCampaign(const std::string& dir) {
     return v;
   };
   ++lineNo;
-  if (!std::getline(in, line) || (line != kResultsMagic && line != kResultsMagicV1)) throw bad("not a gizmo fuzz results file");
+  if (!std::getline(in, line) || (line != kResultsMagic && line != kResultsMagicV1))
+    throw bad("not a gizmo fuzz results file");
   r.cases = line == kResultsMagicV1 ? "generated" : header("cases");
   r.seed = number(header("seed"));
   r.count = number(header("count"));
@@ -377,8 +381,8 @@ CampaignResult readCampaign(const std::string& dir) {
     c.holds = holds == "holds";
     c.fingerprint = number(fingerprint, 16);
     if (c.holds) c.folder.clear();
-    if (c.index >= r.count || std::find(r.shardsIncluded.begin(), r.shardsIncluded.end(), c.index % r.shards) ==
-                                  r.shardsIncluded.end())
+    if (c.index >= r.count ||
+        std::find(r.shardsIncluded.begin(), r.shardsIncluded.end(), c.index % r.shards) == r.shardsIncluded.end())
       throw bad("case " + index + " is not a case of this file's shards");
     r.outcomes.push_back(std::move(c));
   }
@@ -389,8 +393,8 @@ CampaignResult readCampaign(const std::string& dir) {
     const std::uint64_t properties = std::uint64_t(std::count(r.properties.begin(), r.properties.end(), ',')) + 1;
     const std::uint64_t expected = casesPlanned(r) * properties;
     if (seen.size() != r.outcomes.size() || seen.size() != expected)
-      throw CampaignError(path.string() + ": says complete but holds " + std::to_string(r.outcomes.size()) + " checks (" +
-                          std::to_string(seen.size()) + " different) of the " + std::to_string(expected) +
+      throw CampaignError(path.string() + ": says complete but holds " + std::to_string(r.outcomes.size()) +
+                          " checks (" + std::to_string(seen.size()) + " different) of the " + std::to_string(expected) +
                           " its shards have: cut short or edited");
   }
   return r;
@@ -409,11 +413,14 @@ CampaignResult mergeCampaigns(const std::vector<std::pair<std::string, CampaignR
   for (const auto& [dir, part] : parts) {
     if (part.cases != first.cases || part.seed != first.seed || part.count != first.count ||
         part.properties != first.properties || part.shards != first.shards)
-      throw CampaignError(dir + " is from another campaign (cases, seed, count, properties or shard count differ from " +
+      throw CampaignError(dir +
+                          " is from another campaign (cases, seed, count, properties or shard count differ from " +
                           parts.front().first + ")");
     for (std::uint64_t s : part.shardsIncluded) {
-      if (s >= merged.shards) throw CampaignError(dir + " holds shard " + std::to_string(s) + " of " + std::to_string(merged.shards));
-      if (!owner[s].empty()) throw CampaignError("shard " + std::to_string(s) + " is in both " + owner[s] + " and " + dir);
+      if (s >= merged.shards)
+        throw CampaignError(dir + " holds shard " + std::to_string(s) + " of " + std::to_string(merged.shards));
+      if (!owner[s].empty())
+        throw CampaignError("shard " + std::to_string(s) + " is in both " + owner[s] + " and " + dir);
       owner[s] = dir;
     }
     merged.complete = merged.complete && part.complete;
@@ -423,7 +430,8 @@ CampaignResult mergeCampaigns(const std::vector<std::pair<std::string, CampaignR
     }
   }
   for (std::uint64_t s = 0; s < merged.shards; ++s)
-    if (owner[s].empty()) throw CampaignError("shard " + std::to_string(s) + " of " + std::to_string(merged.shards) + " is missing");
+    if (owner[s].empty())
+      throw CampaignError("shard " + std::to_string(s) + " of " + std::to_string(merged.shards) + " is missing");
   for (std::uint64_t s = 0; s < merged.shards; ++s) merged.shardsIncluded.push_back(s);
   // Case order, and within a case the order the properties were checked in (kept by stable_sort).
   std::stable_sort(merged.outcomes.begin(), merged.outcomes.end(),

@@ -63,18 +63,21 @@ std::string seconds(double t) { return shortestDecimal(t) + " s"; }
 
 struct BallWatch {
   std::string name;
-  double inPlaySince = 0;                  // 0, or the instant a spawner put it on the board
-  std::map<GizmoId, double> capturedBy;    // each absorber that captured it, first time
-  std::optional<double> outOfPlay;         // taken out by a sink
+  double inPlaySince = 0;                // 0, or the instant a spawner put it on the board
+  std::map<GizmoId, double> capturedBy;  // each absorber that captured it, first time
+  std::optional<double> outOfPlay;       // taken out by a sink
   std::optional<double> restingSince;
-  Trajectory<double> path;                 // at the last moment
-  bool held = false;                       // captured at the last moment
+  Trajectory<double> path;  // at the last moment
+  bool held = false;        // captured at the last moment
 };
 
 class ExpectationChecker final : public BoardObserver<double> {
  public:
   ExpectationChecker(const GameBoard<double>& board, const std::vector<Expectation>& expectations, double end)
-      : board_(board), expectations_(expectations), end_(end), decided_(expectations.size(), false),
+      : board_(board),
+        expectations_(expectations),
+        end_(end),
+        decided_(expectations.size(), false),
         hits_(expectations.size(), 0) {
     for (const Expectation& e : expectations) gizmos_.push_back(resolve(e));
     for (GizmoId id : board.ballIds()) watch(id, 0);
@@ -157,8 +160,9 @@ class ExpectationChecker final : public BoardObserver<double> {
     for (std::size_t i = 0; i < expectations_.size(); ++i) {
       const Expectation& e = expectations_[i];
       if (e.kind != ExpectationKind::StaysOnBoard || !about(e, b)) continue;
-      fail(i, time, "ball " + b.name + " was taken out of play by " + board_.gizmo(sink).name() + " at t = " +
-                        seconds(time) + ", at " + at(board_.gizmo(id).asBall()->positionAt(time)));
+      fail(i, time,
+           "ball " + b.name + " was taken out of play by " + board_.gizmo(sink).name() + " at t = " + seconds(time) +
+               ", at " + at(board_.gizmo(id).asBall()->positionAt(time)));
     }
   }
 
@@ -195,8 +199,10 @@ class ExpectationChecker final : public BoardObserver<double> {
         tau = firstInstant(b.path, T, board, [&](const Vec2<double>& p) { return !board.contains(p); });
         what = "left the board";
       }
-      if (tau) fail(i, last_ + *tau, "ball " + b.name + " " + what + " at t = " + seconds(last_ + *tau) + ", at " +
-                                         at(b.path.positionAt(*tau)));
+      if (tau)
+        fail(
+            i, last_ + *tau,
+            "ball " + b.name + " " + what + " at t = " + seconds(last_ + *tau) + ", at " + at(b.path.positionAt(*tau)));
     }
   }
 
@@ -212,9 +218,9 @@ class ExpectationChecker final : public BoardObserver<double> {
     for (std::size_t i = 0; i < expectations_.size(); ++i) {
       const Expectation& e = expectations_[i];
       if (e.kind != ExpectationKind::RestsAtMost || !about(e, b) || !(now - *b.restingSince > e.seconds)) continue;
-      fail(i, now, "ball " + b.name + " has rested at " + at(ball.positionAt(now)) + " outside an absorber since t = " +
-                       seconds(*b.restingSince) + ", more than " + seconds(e.seconds) + " (seen at t = " +
-                       seconds(now) + ")");
+      fail(i, now,
+           "ball " + b.name + " has rested at " + at(ball.positionAt(now)) + " outside an absorber since t = " +
+               seconds(*b.restingSince) + ", more than " + seconds(e.seconds) + " (seen at t = " + seconds(now) + ")");
     }
   }
 
@@ -225,8 +231,10 @@ class ExpectationChecker final : public BoardObserver<double> {
     if (decided_[i]) return;
     if (e.kind == ExpectationKind::Hit && passed(e.seconds)) {
       if (hits_[i] >= e.count) decided_[i] = true;
-      else fail(i, e.seconds, e.gizmo + " was hit " + std::to_string(hits_[i]) + " times within " + seconds(e.seconds) +
-                                  ", fewer than " + std::to_string(e.count));
+      else
+        fail(i, e.seconds,
+             e.gizmo + " was hit " + std::to_string(hits_[i]) + " times within " + seconds(e.seconds) +
+                 ", fewer than " + std::to_string(e.count));
       return;
     }
     if (e.kind != ExpectationKind::Reaches) return;
@@ -239,8 +247,9 @@ class ExpectationChecker final : public BoardObserver<double> {
       // Each moment decides the deadlines since the last one, before the paths move on: the
       // path of the last moment holds the ball's place at the deadline.
       const Vec2<double> where = b.path.positionAt(deadline - last_);
-      fail(i, deadline, "ball " + b.name + " did not reach " + e.gizmo + " within " + seconds(e.seconds) +
-                            ": at t = " + seconds(deadline) + " it was at " + at(where));
+      fail(i, deadline,
+           "ball " + b.name + " did not reach " + e.gizmo + " within " + seconds(e.seconds) +
+               ": at t = " + seconds(deadline) + " it was at " + at(where));
       return;
     }
   }

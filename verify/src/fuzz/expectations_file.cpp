@@ -31,7 +31,8 @@ const char* const kGrammar =
 // The words of one line, read left to right; every complaint names the line.
 class LineReader {
  public:
-  LineReader(std::vector<std::string> words, std::string source) : words_(std::move(words)), source_(std::move(source)) {}
+  LineReader(std::vector<std::string> words, std::string source)
+      : words_(std::move(words)), source_(std::move(source)) {}
 
   [[noreturn]] void fail(const std::string& what) const { throw ExpectationError(source_ + ": " + what); }
   bool atEnd() const { return next_ == words_.size(); }

@@ -124,8 +124,8 @@ template <class Real>
 void InvariantChecker<Real>::timePasses(const Real& time, const char* what) {
   if (!checks(Invariant::EventQueue)) return;
   if (time < lastTime_)
-    fail(Invariant::EventQueue, std::string("time went backwards: ") + what + " at t = " + text(time) +
-                                    " after t = " + text(lastTime_));
+    fail(Invariant::EventQueue,
+         std::string("time went backwards: ") + what + " at t = " + text(time) + " after t = " + text(lastTime_));
   lastTime_ = time;
 }
 
@@ -228,8 +228,8 @@ void InvariantChecker<Real>::eventExecuted(const Event<Real>& e, const EventOutc
       fail(Invariant::EventQueue, "executed event " + describeEvent(e) + " was not pending");
     } else {
       if (ordered_.begin()->sequence != e.sequence)
-        fail(Invariant::EventQueue, "executed event " + describeEvent(e) + " while " +
-                                        describeEvent(*ordered_.begin()) + " was due first");
+        fail(Invariant::EventQueue,
+             "executed event " + describeEvent(e) + " while " + describeEvent(*ordered_.begin()) + " was due first");
       ordered_.erase(it->second);
       pending_.erase(it);
     }
@@ -247,7 +247,8 @@ void InvariantChecker<Real>::eventExecuted(const Event<Real>& e, const EventOutc
   released_.clear();
   teleported_.clear();
   takeSnapshot();
-  if (checks(Invariant::NoTunnelling)) checkOverlaps(now, *snapshot_, std::string("after " + describeEvent(e) + " at").c_str());
+  if (checks(Invariant::NoTunnelling))
+    checkOverlaps(now, *snapshot_, std::string("after " + describeEvent(e) + " at").c_str());
 }
 
 template <class Real>
@@ -338,13 +339,15 @@ template <class Real>
 void InvariantChecker<Real>::checkCoverage() {
   const Real& now = board_.now();
   if (!ordered_.empty() && ordered_.begin()->time < now)
-    fail(Invariant::EventQueue, "pending event " + describeEvent(*ordered_.begin()) + " is earlier than t = " + text(now));
+    fail(Invariant::EventQueue,
+         "pending event " + describeEvent(*ordered_.begin()) + " is earlier than t = " + text(now));
   const std::vector<Event<Real>> queue = board_.pendingEvents();
   bool same = queue.size() == pending_.size();
   for (std::size_t i = 0; same && i < queue.size(); ++i) same = pending_.count(queue[i].sequence) == 1;
   if (!same)
     fail(Invariant::EventQueue, "at t = " + text(now) + " the board's queue holds " + std::to_string(queue.size()) +
-                                    " events, but " + std::to_string(pending_.size()) + " were scheduled and not yet run or removed");
+                                    " events, but " + std::to_string(pending_.size()) +
+                                    " were scheduled and not yet run or removed");
   // Who is looked after: a ball by any pending event that names it, in time.
   const Real horizon = now + board_.params().maxTick;
   std::map<GizmoId, Real> firstEvent;
@@ -356,16 +359,19 @@ void InvariantChecker<Real>::checkCoverage() {
     if (b.resting()) continue;  // at rest for good until something hits it: the reason for no event
     const auto it = firstEvent.find(id);
     if (it == firstEvent.end() || horizon < it->second)
-      fail(Invariant::EventQueue, "moving ball " + b.name() + " has no pending event within one maximum tick of t = " +
-                                      text(now) + (it == firstEvent.end() ? std::string(" (none at all)")
-                                                                          : " (its first at t = " + text(it->second) + ")"));
+      fail(Invariant::EventQueue, "moving ball " + b.name() +
+                                      " has no pending event within one maximum tick of t = " + text(now) +
+                                      (it == firstEvent.end() ? std::string(" (none at all)")
+                                                              : " (its first at t = " + text(it->second) + ")"));
   }
   // A swinging flipper must have its stop pending (a spinner turns on without one).
   for (const auto& [id, turning] : snapshot_->turning) {
     if (!turning.moving || board_.gizmo(id).kind() == GizmoKind::Spinner) continue;
     bool stop = false;
     for (const Event<Real>& e : queue) stop = stop || (e.kind == EventKind::FlipperStop && e.a == id);
-    if (!stop) fail(Invariant::EventQueue, "swinging flipper " + board_.gizmo(id).name() + " has no pending stop at t = " + text(now));
+    if (!stop)
+      fail(Invariant::EventQueue,
+           "swinging flipper " + board_.gizmo(id).name() + " has no pending stop at t = " + text(now));
   }
 }
 

@@ -34,7 +34,9 @@ struct Digest {
     for (std::size_t i = 0; i < n; ++i) h = (h ^ static_cast<const unsigned char*>(data)[i]) * 0x100000001b3ULL;
   }
   template <class T>
-  void add(const T& value) { add(&value, sizeof value); }
+  void add(const T& value) {
+    add(&value, sizeof value);
+  }
   void add(const std::string& s) { add(s.data(), s.size()); }
 };
 
@@ -49,14 +51,17 @@ PropertyResult invariantResult(const InvariantRun& r, Invariant which) {
 }
 
 InvariantRun invariantsIn(Precision scalar, const RunRequest& run, const std::vector<Invariant>& which) {
-  return scalar == Precision::LongDouble ? checkInvariants<long double>(run, which) : checkInvariants<double>(run, which);
+  return scalar == Precision::LongDouble ? checkInvariants<long double>(run, which)
+                                         : checkInvariants<double>(run, which);
 }
 
 PropertyResult fromInvariant(const RunRequest& run, Precision scalar, Invariant which) {
   return invariantResult(invariantsIn(scalar, run, {which}), which);
 }
 
-PropertyResult noTunnelling(const RunRequest& run, Precision s) { return fromInvariant(run, s, Invariant::NoTunnelling); }
+PropertyResult noTunnelling(const RunRequest& run, Precision s) {
+  return fromInvariant(run, s, Invariant::NoTunnelling);
+}
 PropertyResult energy(const RunRequest& run, Precision s) { return fromInvariant(run, s, Invariant::Energy); }
 PropertyResult eventQueue(const RunRequest& run, Precision s) { return fromInvariant(run, s, Invariant::EventQueue); }
 
@@ -131,7 +136,8 @@ PropertyResult roundTrip(const RunRequest& run, Precision) {
     const std::vector<io::KeyInput> keys = io::readKeyScript(writeKeyScript(run.keys), "written.keys");
     bool same = keys.size() == run.keys.size();
     for (std::size_t i = 0; same && i < keys.size(); ++i)
-      same = keys[i].time == run.keys[i].time && keys[i].key == run.keys[i].key && keys[i].direction == run.keys[i].direction;
+      same = keys[i].time == run.keys[i].time && keys[i].key == run.keys[i].key &&
+             keys[i].direction == run.keys[i].direction;
     if (!same) return {false, "key script -> text -> key script changed it", d.h};
   } catch (const io::InputError& e) {
     return {false, std::string("the key script written does not read back: ") + e.what(), d.h};
@@ -229,7 +235,9 @@ class PhysicalTrace final : public BoardObserver<double> {
     if (e.kind == EventKind::Recalculate || e.kind == EventKind::EndOfTick || e.kind == EventKind::FrictionTick) return;
     // Without the sequence number: the models' bookkeeping events take different numbers.
     PhysicalDecision d{std::string(eventKindName(e.kind)) + " a=" + std::to_string(e.a) + " b=" + std::to_string(e.b),
-                       e.feature, e.time, {}};
+                       e.feature,
+                       e.time,
+                       {}};
     bool changedNothing = e.kind == EventKind::Collision;
     for (const BallChange<double>& c : o.balls()) {
       d.values.insert(d.values.end(), {c.position.x, c.position.y, c.velocityAfter.x, c.velocityAfter.y});
@@ -247,7 +255,8 @@ class PhysicalTrace final : public BoardObserver<double> {
     decisions.push_back(consequenceAt("action " + std::to_string(g), t));
   }
   void modelRuleApplied(const double& t, ModelRule r, GizmoId g, GizmoId o) override {
-    decisions.push_back(consequenceAt(std::string(modelRuleName(r)) + " " + std::to_string(g) + " " + std::to_string(o), t));
+    decisions.push_back(
+        consequenceAt(std::string(modelRuleName(r)) + " " + std::to_string(g) + " " + std::to_string(o), t));
   }
 
  private:
@@ -312,10 +321,12 @@ PropertyResult compareModelDecisions(std::vector<PhysicalDecision> c, std::vecto
   // parts the same way between the two models). A decision that one run lacks, within the time
   // tolerance of such a reordered pair, is that near-tie, and the runs part there.
   std::optional<double> reorderedAt;
-  auto matchAhead = [&reorderedAt](std::vector<PhysicalDecision>& run, std::size_t from, const PhysicalDecision& wanted) {
+  auto matchAhead = [&reorderedAt](std::vector<PhysicalDecision>& run, std::size_t from,
+                                   const PhysicalDecision& wanted) {
     for (std::size_t k = from + 1; k < run.size() && run[k].time <= run[from].time + kModelTimeTolerance; ++k)
       if (sameDecision(run[k], wanted)) {
-        std::rotate(run.begin() + std::ptrdiff_t(from), run.begin() + std::ptrdiff_t(k), run.begin() + std::ptrdiff_t(k) + 1);
+        std::rotate(run.begin() + std::ptrdiff_t(from), run.begin() + std::ptrdiff_t(k),
+                    run.begin() + std::ptrdiff_t(k) + 1);
         reorderedAt = wanted.time;
         return true;
       }
@@ -372,8 +383,8 @@ PropertyResult compareModelDecisions(std::vector<PhysicalDecision> c, std::vecto
     // near-tie that the models' rounding breaks. The runs part there legitimately.
     if (std::fabs(c[i].time - b[j].time) <= kModelTimeTolerance) return {true, "", digest.h};
     return {false,
-            "decision " + std::to_string(i) + " differs while the states agree: classic " + show(c[i]) + ", ballistic " +
-                show(b[j]),
+            "decision " + std::to_string(i) + " differs while the states agree: classic " + show(c[i]) +
+                ", ballistic " + show(b[j]),
             digest.h};
   }
   while (i < c.size() && c[i].negligible) ++i;
@@ -396,12 +407,15 @@ std::span<const Property> allProperties() {
   static const Property all[] = {
       {"no-tunnelling", "no ball inside a gizmo or beyond a wall, at every event and between events", &noTunnelling,
        Invariant::NoTunnelling},
-      {"energy", "energy rises only by what flipper hits, absorber shots and boosters supply; friction ticks slow balls", &energy,
+      {"energy",
+       "energy rises only by what flipper hits, absorber shots and boosters supply; friction ticks slow balls", &energy,
        Invariant::Energy},
       {"event-queue", "time never goes back; the queue holds exactly the pending events; every moving ball is covered",
        &eventQueue, Invariant::EventQueue},
-      {"replay-identity", "recording twice gives the same log, and replaying it gives the same decisions", &replayIdentity},
-      {"round-trip", "board -> XML -> board and board -> text -> board give the same board; key scripts too", &roundTrip},
+      {"replay-identity", "recording twice gives the same log, and replaying it gives the same decisions",
+       &replayIdentity},
+      {"round-trip", "board -> XML -> board and board -> text -> board give the same board; key scripts too",
+       &roundTrip},
       {"models-agree", "with gravity and friction 0, classic and ballistic make the same decisions", &modelsAgree},
   };
   return all;

@@ -67,7 +67,8 @@ std::optional<std::string> boardDifference(const BoardSpec& a, const BoardSpec& 
   if (auto d = number("gravity", a.gravity, b.gravity)) return d;
   if (auto d = number("mu", a.mu, b.mu)) return d;
   if (auto d = number("mu2", a.mu2, b.mu2)) return d;
-  if (a.balls.size() != b.balls.size()) return "ball count " + std::to_string(a.balls.size()) + " became " + std::to_string(b.balls.size());
+  if (a.balls.size() != b.balls.size())
+    return "ball count " + std::to_string(a.balls.size()) + " became " + std::to_string(b.balls.size());
   for (std::size_t i = 0; i < a.balls.size(); ++i) {
     const BallSpec &x = a.balls[i], &y = b.balls[i];
     if (x.name != y.name) return "ball " + std::to_string(i) + " name " + x.name + " became " + y.name;
@@ -83,7 +84,8 @@ std::optional<std::string> boardDifference(const BoardSpec& a, const BoardSpec& 
       std::ostringstream s;
       s << "gizmo " << i << ": " << gizmoTypeWord(x.type) << " " << x.name << " at " << x.x << "," << x.y << " "
         << x.width << "x" << x.height << " orientation " << x.orientation << " became " << gizmoTypeWord(y.type) << " "
-        << y.name << " at " << y.x << "," << y.y << " " << y.width << "x" << y.height << " orientation " << y.orientation;
+        << y.name << " at " << y.x << "," << y.y << " " << y.width << "x" << y.height << " orientation "
+        << y.orientation;
       return s.str();
     }
   }

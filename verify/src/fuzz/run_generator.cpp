@@ -18,7 +18,6 @@ namespace {
 // The key codes that key connections and the key script share, so that presses do something.
 constexpr std::array<int, 4> kKeys{32, 37, 39, 65};
 
-
 struct Builder {
   SeededRandom& rng;
   BoardSpec& board;

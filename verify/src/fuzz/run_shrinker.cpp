@@ -58,20 +58,30 @@ void removals(std::size_t n, std::size_t keep, Remove remove, std::vector<RunReq
 std::vector<RunRequest> shrinkCandidates(const RunRequest& run) {
   std::vector<RunRequest> out;
   const BoardSpec& b = run.board;
-  removals(run.keys.size(), 0, [&](std::size_t f, std::size_t t) { return without(run, &RunRequest::keys, f, t); }, out);
-  removals(b.gizmos.size(), 0, [&](std::size_t f, std::size_t t) { return withoutGizmos(run, f, t); }, out);
-  removals(b.balls.size(), 1, [&](std::size_t f, std::size_t t) { return withoutBalls(run, f, t); }, out);
-  removals(b.connections.size(), 0, [&](std::size_t f, std::size_t t) {
-    RunRequest r = run;
-    r.board.connections.erase(r.board.connections.begin() + std::ptrdiff_t(f), r.board.connections.begin() + std::ptrdiff_t(t));
-    return r;
-  }, out);
-  removals(b.keyConnections.size(), 0, [&](std::size_t f, std::size_t t) {
-    RunRequest r = run;
-    r.board.keyConnections.erase(r.board.keyConnections.begin() + std::ptrdiff_t(f),
-                                 r.board.keyConnections.begin() + std::ptrdiff_t(t));
-    return r;
-  }, out);
+  removals(
+      run.keys.size(), 0, [&](std::size_t f, std::size_t t) { return without(run, &RunRequest::keys, f, t); }, out);
+  removals(
+      b.gizmos.size(), 0, [&](std::size_t f, std::size_t t) { return withoutGizmos(run, f, t); }, out);
+  removals(
+      b.balls.size(), 1, [&](std::size_t f, std::size_t t) { return withoutBalls(run, f, t); }, out);
+  removals(
+      b.connections.size(), 0,
+      [&](std::size_t f, std::size_t t) {
+        RunRequest r = run;
+        r.board.connections.erase(r.board.connections.begin() + std::ptrdiff_t(f),
+                                  r.board.connections.begin() + std::ptrdiff_t(t));
+        return r;
+      },
+      out);
+  removals(
+      b.keyConnections.size(), 0,
+      [&](std::size_t f, std::size_t t) {
+        RunRequest r = run;
+        r.board.keyConnections.erase(r.board.keyConnections.begin() + std::ptrdiff_t(f),
+                                     r.board.keyConnections.begin() + std::ptrdiff_t(t));
+        return r;
+      },
+      out);
   if (run.duration > 0.01) {
     RunRequest r = run;
     r.duration = run.duration / 2;
@@ -107,8 +117,7 @@ std::vector<RunRequest> shrinkCandidates(const RunRequest& run) {
   return out;
 }
 
-Minimised minimise(const RunRequest& failing, const std::function<bool(const RunRequest&)>& fails,
-                   std::size_t budget) {
+Minimised minimise(const RunRequest& failing, const std::function<bool(const RunRequest&)>& fails, std::size_t budget) {
   Minimised m{failing, 0, 0};
   for (bool progress = true; progress && m.tries < budget;) {
     progress = false;

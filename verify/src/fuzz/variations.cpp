@@ -53,7 +53,9 @@ void applyBallChange(BallSpec& ball, const BallDeparture& b) {
   ball.vy = ball.vy * b.speedFactor + b.kickVy;
 }
 
-double effectiveDuration(const RunRequest& base, const Departure& d) { return d.duration ? *d.duration : base.duration; }
+double effectiveDuration(const RunRequest& base, const Departure& d) {
+  return d.duration ? *d.duration : base.duration;
+}
 
 bool sameBallChange(const BallDeparture& b) {
   return b.dx == 0 && b.dy == 0 && b.speedFactor == 1 && b.turn == 0 && b.kickVx == 0 && b.kickVy == 0;
@@ -67,7 +69,8 @@ std::vector<Departure> eachChangeGivenBack(const Departure& d) {
     out.push_back(d);
     out.back().balls.erase(out.back().balls.begin() + std::ptrdiff_t(i));
   }
-  for (double Departure::*f : {&Departure::gravityFactor, &Departure::muFactor, &Departure::mu2Factor, &Departure::maxTickFactor})
+  for (double Departure::*f :
+       {&Departure::gravityFactor, &Departure::muFactor, &Departure::mu2Factor, &Departure::maxTickFactor})
     if (d.*f != 1) {
       out.push_back(d);
       out.back().*f = 1;
@@ -86,9 +89,9 @@ std::vector<Departure> eachChangeGivenBack(const Departure& d) {
 }  // namespace
 
 bool Departure::empty() const {
-  return added.empty() && removed.empty() && moved.empty() &&
-         std::all_of(balls.begin(), balls.end(), sameBallChange) && gravityFactor == 1 && muFactor == 1 &&
-         mu2Factor == 1 && !otherModel && maxTickFactor == 1 && !otherScalar && !duration;
+  return added.empty() && removed.empty() && moved.empty() && std::all_of(balls.begin(), balls.end(), sameBallChange) &&
+         gravityFactor == 1 && muFactor == 1 && mu2Factor == 1 && !otherModel && maxTickFactor == 1 && !otherScalar &&
+         !duration;
 }
 
 std::vector<int> connectedKeys(const BoardSpec& board) {
@@ -114,10 +117,10 @@ Departure randomDeparture(const RunRequest& base, std::uint64_t seed, const Vari
       // One press in four on a tick boundary, where a key meets the end of a tick.
       if (r.chance(4) && base.maxTick > 0) p.down = std::floor(p.down / base.maxTick) * base.maxTick;
       switch (r.whole(0, 3)) {
-        case 0: p.up = p.down; break;                            // a tap within one instant
-        case 1: p.up = p.down + r.real(0.01, 0.5); break;        // a press
-        case 2: p.up = -1; break;                                // held to the end
-        default:                                                 // a fast repeat
+        case 0: p.up = p.down; break;                      // a tap within one instant
+        case 1: p.up = p.down + r.real(0.01, 0.5); break;  // a press
+        case 2: p.up = -1; break;                          // held to the end
+        default:                                           // a fast repeat
           p.repeats = r.whole(2, 6);
           p.period = r.real(0.02, 0.1);
           p.up = p.down + p.period / 2;
@@ -164,7 +167,8 @@ Departure randomDeparture(const RunRequest& base, std::uint64_t seed, const Vari
       }
     }
   }
-  if (o.gravity > 0 && base.board.gravity != 0 && r.chance(2)) d.gravityFactor = 1 + r.real(-o.gravity, o.gravity) / 100;
+  if (o.gravity > 0 && base.board.gravity != 0 && r.chance(2))
+    d.gravityFactor = 1 + r.real(-o.gravity, o.gravity) / 100;
   if (o.friction > 0 && (base.board.mu != 0 || base.board.mu2 != 0) && r.chance(2)) {
     d.muFactor = 1 + r.real(-o.friction, o.friction) / 100;
     d.mu2Factor = 1 + r.real(-o.friction, o.friction) / 100;
@@ -223,7 +227,8 @@ std::vector<Departure> departuresCloser(const RunRequest& base, const Departure&
     with([&](Departure& c) { c.added.erase(c.added.begin(), c.added.begin() + std::ptrdiff_t(n / 2)); });
     with([&](Departure& c) { c.added.erase(c.added.begin() + std::ptrdiff_t(n / 2), c.added.end()); });
   }
-  for (std::size_t i = 0; n > 1 && i < n; ++i) with([&](Departure& c) { c.added.erase(c.added.begin() + std::ptrdiff_t(i)); });
+  for (std::size_t i = 0; n > 1 && i < n; ++i)
+    with([&](Departure& c) { c.added.erase(c.added.begin() + std::ptrdiff_t(i)); });
   for (std::size_t i = 0; i < n; ++i)
     if (d.added[i].repeats > 1) with([&](Departure& c) { c.added[i].repeats = 1; });
   for (std::size_t i = 0; i < d.removed.size(); ++i)
@@ -303,12 +308,9 @@ std::string describeDeparture(const RunRequest& base, const Departure& d, Precis
     if (p.repeats > 1)
       parts.push_back(key + " pressed " + std::to_string(p.repeats) + " times from " + seconds(p.down) + ", every " +
                       seconds(p.period) + " (each held " + seconds(p.up - p.down) + ")");
-    else if (p.up < p.down)
-      parts.push_back(key + " down at " + seconds(p.down) + " and held");
-    else if (p.up == p.down)
-      parts.push_back(key + " down and up at " + seconds(p.down));
-    else
-      parts.push_back(key + " down at " + seconds(p.down) + ", up at " + seconds(p.up));
+    else if (p.up < p.down) parts.push_back(key + " down at " + seconds(p.down) + " and held");
+    else if (p.up == p.down) parts.push_back(key + " down and up at " + seconds(p.down));
+    else parts.push_back(key + " down at " + seconds(p.down) + ", up at " + seconds(p.up));
   }
   for (std::size_t k : d.removed)
     parts.push_back("key " + std::to_string(base.keys[k].key) + " " + directionName(base.keys[k].direction) + " at " +
@@ -338,18 +340,20 @@ std::string describeDeparture(const RunRequest& base, const Departure& d, Precis
     parts.push_back("gravity " + number(base.board.gravity * d.gravityFactor) + " L/s² (" + number(base.board.gravity) +
                     " on the board)");
   if (d.muFactor != 1)
-    parts.push_back("friction mu " + number(base.board.mu * d.muFactor) + " (" + number(base.board.mu) + " on the board)");
+    parts.push_back("friction mu " + number(base.board.mu * d.muFactor) + " (" + number(base.board.mu) +
+                    " on the board)");
   if (d.mu2Factor != 1)
     parts.push_back("friction mu2 " + number(base.board.mu2 * d.mu2Factor) + " (" + number(base.board.mu2) +
                     " on the board)");
   if (d.otherModel)
-    parts.push_back(std::string("the ") + (base.model == MotionModel::Ballistic ? "classic" : "ballistic") + " model (" +
-                    std::string(motionModelName(base.model)) + " given)");
+    parts.push_back(std::string("the ") + (base.model == MotionModel::Ballistic ? "classic" : "ballistic") +
+                    " model (" + std::string(motionModelName(base.model)) + " given)");
   if (d.maxTickFactor != 1)
-    parts.push_back("maximum tick " + seconds(base.maxTick * d.maxTickFactor) + " (" + seconds(base.maxTick) + " given)");
+    parts.push_back("maximum tick " + seconds(base.maxTick * d.maxTickFactor) + " (" + seconds(base.maxTick) +
+                    " given)");
   if (d.otherScalar)
     parts.push_back(scalarOf(baseScalar, d) == Precision::LongDouble ? "in long double (double given)"
-                                                                      : "in double (long double given)");
+                                                                     : "in double (long double given)");
   if (d.duration) parts.push_back("the run cut to " + seconds(*d.duration) + " (" + seconds(base.duration) + " given)");
   if (parts.empty()) return "none: the board as given";
   std::string s;

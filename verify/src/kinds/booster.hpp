@@ -18,7 +18,8 @@ struct KindVerify<GizmoType::Booster> {
   static constexpr bool restedOnTop = false;
   static constexpr bool touchedBesideCapsule = false;
   // No exact run: its face's normal is irrational.
-  static constexpr std::string_view exactRunRefusal = "has a 45-degree edge, whose unit normal (sqrt(2)/2) is irrational";
+  static constexpr std::string_view exactRunRefusal =
+      "has a 45-degree edge, whose unit normal (sqrt(2)/2) is irrational";
   static constexpr bool box2dModels = true;
 };
 

@@ -47,6 +47,7 @@ concept VerifyKindEntry = requires {
   { K::exactRunRefusal } -> std::convertible_to<std::string_view>;
   // Whether the Box2D bridge models it (verify/src/box2d_mapping.cpp reports it by name if not).
   { K::box2dModels } -> std::convertible_to<bool>;
-} && (!K::generatedByConversion || GeneratedByConversion<K>);
+}
+&&(!K::generatedByConversion || GeneratedByConversion<K>);
 
 }  // namespace gizmo::verify

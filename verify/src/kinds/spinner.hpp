@@ -9,7 +9,9 @@ struct KindVerify<GizmoType::Spinner> {
   // Generated: a third of the flippers become spinners (keeping the key connection a flipper is
   // given) (docs/fuzzing.md).
   static constexpr bool generatedByConversion = true;
-  static constexpr bool convertsFrom(GizmoType t) { return t == GizmoType::LeftFlipper || t == GizmoType::RightFlipper; }
+  static constexpr bool convertsFrom(GizmoType t) {
+    return t == GizmoType::LeftFlipper || t == GizmoType::RightFlipper;
+  }
   static constexpr int oneIn = 3;
   static void converted(GizmoSpec& /*g*/, fuzz::SeededRandom& /*own*/) {}
   static void afterConversions(BoardSpec& /*board*/, fuzz::SeededRandom& /*own*/) {}

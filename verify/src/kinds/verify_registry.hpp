@@ -7,8 +7,9 @@
 
 namespace gizmo::verify {
 
-#define GIZMO_VERIFY_KIND_IS_COMPLETE(Name, stem)                                             \
-  static_assert(VerifyKindEntry<KindVerify<GizmoType::Name>>, "kind " #Name ": verify/src/kinds/" #stem \
+#define GIZMO_VERIFY_KIND_IS_COMPLETE(Name, stem)             \
+  static_assert(VerifyKindEntry<KindVerify<GizmoType::Name>>, \
+                "kind " #Name ": verify/src/kinds/" #stem     \
                 ".hpp lacks part of what VerifyKindEntry (verify/src/kinds/kind_verify.hpp) asks");
 GIZMO_KINDS(GIZMO_VERIFY_KIND_IS_COMPLETE)
 #undef GIZMO_VERIFY_KIND_IS_COMPLETE

@@ -30,7 +30,7 @@ struct SourcePos {
 struct GizmoSpec {
   GizmoType type = GizmoType::Square;
   std::string name;
-  int x = 0;            // upper-left corner of the bounding box, in L
+  int x = 0;  // upper-left corner of the bounding box, in L
   int y = 0;
   int orientation = 0;  // degrees clockwise on screen: 0, 90, 180 or 270
   int width = 1;        // bounding box in L: 1×1 bumpers, 2×2 flippers and spinners, w×h absorbers

@@ -25,18 +25,20 @@ struct GizmoKindInfo {
 };
 
 // Every kind's file holds what CoreKindEntry asks for; the message names the kind and its file.
-#define GIZMO_KIND_IS_COMPLETE(Name, stem)                                                      \
-  static_assert(CoreKindEntry<KindCore<GizmoType::Name>>,                                      \
-                "kind " #Name ": core/include/gizmo/core/kinds/" #stem ".hpp lacks part of what " \
+#define GIZMO_KIND_IS_COMPLETE(Name, stem)                             \
+  static_assert(CoreKindEntry<KindCore<GizmoType::Name>>,              \
+                "kind " #Name ": core/include/gizmo/core/kinds/" #stem \
+                ".hpp lacks part of what "                             \
                 "CoreKindEntry (kinds/kind_core.hpp) asks of a kind's core file");
 GIZMO_KINDS(GIZMO_KIND_IS_COMPLETE)
 #undef GIZMO_KIND_IS_COMPLETE
 
 template <GizmoType T>
-  requires CoreKindEntry<KindCore<T>>
+requires CoreKindEntry<KindCore<T>>
 constexpr GizmoKindInfo kindInfoOf() {
   using K = KindCore<T>;
-  return {T, K::textCommand, K::textUsage, K::xmlElement, K::word, K::drawing, K::side, K::disc, K::xmlOrientationAlways, K::handedness};
+  return {T,          K::textCommand, K::textUsage, K::xmlElement,           K::word,
+          K::drawing, K::side,        K::disc,      K::xmlOrientationAlways, K::handedness};
 }
 
 // In GizmoType's order. Booster and after are other programs' additions, spelled as the programs

@@ -13,8 +13,7 @@ namespace gizmo::replay {
 namespace detail {
 
 // Out of line and cold: keeps the throwing code (string building) off the inline fast paths.
-[[noreturn, gnu::cold]] void throwUnderflow(std::size_t offset, std::size_t wanted,
-                                            std::size_t available);
+[[noreturn, gnu::cold]] void throwUnderflow(std::size_t offset, std::size_t wanted, std::size_t available);
 [[noreturn, gnu::cold]] void throwBadVarint(std::size_t offset, const char* problem);
 
 // Stores the low `width` (<= 8) bytes of `value` at `out`, lowest byte first.
@@ -33,9 +32,7 @@ inline std::uint64_t zigzag(std::int64_t v) {
   return (static_cast<std::uint64_t>(v) << 1) ^ static_cast<std::uint64_t>(v >> 63);
 }
 
-inline std::int64_t unzigzag(std::uint64_t u) {
-  return static_cast<std::int64_t>((u >> 1) ^ (0 - (u & 1)));
-}
+inline std::int64_t unzigzag(std::uint64_t u) { return static_cast<std::int64_t>((u >> 1) ^ (0 - (u & 1))); }
 
 // LEB128 stored at p, which must have room for kMaxVarintBytes; returns the end.
 [[gnu::always_inline]] inline std::uint8_t* putVarint(std::uint8_t* p, std::uint64_t v) {

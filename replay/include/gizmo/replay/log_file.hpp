@@ -65,7 +65,8 @@ inline ChunkEntry entryOf(const ChunkPreamble& p, std::uint64_t offset) {
 // them to bytes in memory (a web page that hands the log to its user, `gizmo play`).
 class LogWriter final : public ChunkSink {
  public:
-  explicit LogWriter(const std::string& path);  // the file is created by header(); throws std::runtime_error naming the path
+  explicit LogWriter(
+      const std::string& path);  // the file is created by header(); throws std::runtime_error naming the path
   explicit LogWriter(std::vector<std::uint8_t>& memory);
   ~LogWriter() override;
   void header(std::span<const std::uint8_t> payload) override;

@@ -16,7 +16,7 @@ inline constexpr std::uint16_t kBranchFormatVersion = 5;
 inline constexpr std::size_t kFileHeaderSize = 12;  // magic, u16 version, u16 reserved
 inline constexpr std::size_t kFrameHeaderSize = 5;  // u8 type, u32 payload length
 inline constexpr std::size_t kFrameChecksumSize = 8;
-inline constexpr std::size_t kTrailerSize = 16;     // u64 index frame offset, trailer magic
+inline constexpr std::size_t kTrailerSize = 16;  // u64 index frame offset, trailer magic
 // No frame of a sane log comes near this; a larger length is corruption, not a big run.
 inline constexpr std::uint32_t kMaxFramePayload = 1u << 30;
 
@@ -44,10 +44,10 @@ enum class RecordType : std::uint8_t {
   Executed = 0x90,  // bit 3: ball a changed, bit 2: ball b changed, bits 0–1: distance (3: varint)
   Trigger = 0xA0,
   Action = 0xB0,
-  Input = 0xC0,     // bit 0: key up
-  Rule = 0xD0,      // bits 0–3: the model rule
+  Input = 0xC0,  // bit 0: key up
+  Rule = 0xD0,   // bits 0–3: the model rule
   Tick = 0xE0,
-  Time = 0xF0,      // the current time moves without an event (never in a normal run)
+  Time = 0xF0,  // the current time moves without an event (never in a normal run)
 };
 
 }  // namespace gizmo::replay

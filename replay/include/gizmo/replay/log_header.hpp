@@ -35,7 +35,7 @@ struct LogHeader {
   double maxTick = 0.05;
   double duration = 0;
   std::vector<TimedKey> keys;
-  std::string board;       // canonical text form (io::writeTextBoard)
+  std::string board;            // canonical text form (io::writeTextBoard)
   std::uint64_t boardHash = 0;  // checksum64 of the board text
   // What the board reader said about the file the board came from (io::format of each warning):
   // empty when it was read as written. Since format version 3.
@@ -50,7 +50,8 @@ LogHeader headerFor(const RunRequest& request, const std::string& precision, con
                     const std::string& format, std::vector<std::uint8_t> params);
 std::vector<std::uint8_t> encodeHeader(const LogHeader& h);
 // The payload of a log of format `version`: a branch log's (version 5) ends with its parent.
-LogHeader decodeHeader(std::span<const std::uint8_t> payload, std::uint16_t version = kFormatVersion);  // throws FormatError
+LogHeader decodeHeader(std::span<const std::uint8_t> payload,
+                       std::uint16_t version = kFormatVersion);  // throws FormatError
 // The run the header describes; throws FormatError when the embedded board does not read back
 // or does not match its hash.
 RunRequest requestOf(const LogHeader& h);

@@ -298,7 +298,8 @@ class RecordEncoder {
   TimeForm timeForm(const Event<Real>& e, std::int64_t& k) {
     if (sameEncoding(e.time, c_.now)) return TimeForm::Now;
     if (sameEncoding(e.time, nowPlusTick_)) return TimeForm::NowPlusTick;
-    if (e.kind == EventKind::FrictionTick && onGrid(e.time, c_.frictionStep, lastFrictionK_, k)) return TimeForm::FrictionGrid;
+    if (e.kind == EventKind::FrictionTick && onGrid(e.time, c_.frictionStep, lastFrictionK_, k))
+      return TimeForm::FrictionGrid;
     if (e.kind == EventKind::EndOfTick && onGrid(e.time, c_.maxTick, lastTickK_, k)) return TimeForm::TickGrid;
     return TimeForm::Explicit;
   }
@@ -359,11 +360,11 @@ inline std::string_view decisionTypeName(DecisionType t) {
 template <class Real>
 struct Decision {
   DecisionType type = DecisionType::Tick;
-  Real time{0};               // the board time the decision was made at
-  Event<Real> event;          // scheduled, removed, executed
-  EventOutcome<Real> outcome; // executed
-  GizmoId gizmo = kNoGizmo;   // trigger: source; action: target; rule: the gizmo
-  GizmoId other = kNoGizmo;   // trigger: target; rule: the other gizmo
+  Real time{0};                // the board time the decision was made at
+  Event<Real> event;           // scheduled, removed, executed
+  EventOutcome<Real> outcome;  // executed
+  GizmoId gizmo = kNoGizmo;    // trigger: source; action: target; rule: the gizmo
+  GizmoId other = kNoGizmo;    // trigger: target; rule: the other gizmo
   int key = 0;
   KeyDirection direction = KeyDirection::Down;
   ModelRule rule = ModelRule::FrictionApplied;

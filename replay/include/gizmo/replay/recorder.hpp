@@ -40,7 +40,8 @@ class KeptChunks final : public ChunkSink {
 template <class Real>
 class Recorder final : public BoardObserver<Real> {
  public:
-  Recorder(ChunkSink& sink, const GameBoard<Real>& board) : sink_(sink), board_(board), encoder_(chunk_, board.params()) {
+  Recorder(ChunkSink& sink, const GameBoard<Real>& board)
+      : sink_(sink), board_(board), encoder_(chunk_, board.params()) {
     begin(std::nullopt);
   }
   // A recording that starts from the board's state now, at a tick boundary (a branch log, or a
@@ -51,7 +52,10 @@ class Recorder final : public BoardObserver<Real> {
     std::uint64_t decisionsDone = 0;
   };
   Recorder(ChunkSink& sink, const GameBoard<Real>& board, const Start& start)
-      : sink_(sink), board_(board), encoder_(chunk_, board.params()), decisionsBefore_(start.decisionsDone),
+      : sink_(sink),
+        board_(board),
+        encoder_(chunk_, board.params()),
+        decisionsBefore_(start.decisionsDone),
         ticks_(start.ticksDone) {
     begin(board.saveState());
   }

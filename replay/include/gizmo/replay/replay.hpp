@@ -101,18 +101,18 @@ class DecisionStream {
 struct StateView {
   Exact time;
   std::uint64_t events = 0;
-  std::vector<BallView> balls;  // every ball: position and velocity at `time`
+  std::vector<BallView> balls;     // every ball: position and velocity at `time`
   std::vector<std::string> queue;  // the pending events, earliest first, one line each
 };
 struct ReplayReport {
   bool identical = true;
-  bool byDigests = false;  // identity was established from the chunks' digests and keyframes
+  bool byDigests = false;       // identity was established from the chunks' digests and keyframes
   std::uint64_t decisions = 0;  // compared
   std::uint64_t events = 0;
   std::string note;  // e.g. the log was cut off and only its prefix was compared
   // At the first difference:
   std::optional<DecisionView> logDecision, runDecision;  // absent when one side had ended
-  std::string where;  // what differs, in words
+  std::string where;                                     // what differs, in words
   std::optional<StateView> logState, runState;
 };
 // How a replay compares the run with the log. By digests: the run is made again without encoding,
@@ -185,8 +185,8 @@ struct BranchRequest {
 };
 struct BranchResult {
   RecordResult record;
-  BranchOrigin origin;       // the parent's digest and the branch point's event index
-  Exact time;                // the branch point's board time
+  BranchOrigin origin;            // the parent's digest and the branch point's event index
+  Exact time;                     // the branch point's board time
   std::uint64_t startEvents = 0;  // the parent's events at the tick boundary the branch log starts from
   std::size_t keysLeftOut = 0;    // keys of the request before the branch point
 };
@@ -203,13 +203,13 @@ BranchResult recordBranch(const OpenedLog& parent, const BranchRequest& request,
 // --- two logs ----------------------------------------------------------------------------------
 struct DiffReport {
   bool parted = false;
-  bool sameScalar = true;       // values are compared exactly only between logs of one scalar
-  std::uint64_t matched = 0;    // decisions alike before the logs part
+  bool sameScalar = true;     // values are compared exactly only between logs of one scalar
+  std::uint64_t matched = 0;  // decisions alike before the logs part
   // The first decision compared: 0, or where a branch starts (a branch log holds nothing before).
   std::uint64_t firstDecision = 0;
-  std::string where;            // what differs at the parting decision
-  std::vector<std::string> notes;  // e.g. the logs are of different boards or models
-  std::vector<DecisionView> before;  // the last alike decisions (of the first log)
+  std::string where;                          // what differs at the parting decision
+  std::vector<std::string> notes;             // e.g. the logs are of different boards or models
+  std::vector<DecisionView> before;           // the last alike decisions (of the first log)
   std::optional<DecisionView> first, second;  // the parting decisions; absent where a log ended
   std::vector<DecisionView> afterFirst, afterSecond;
   double maxTimeDifference = 0;      // over alike decisions: event times

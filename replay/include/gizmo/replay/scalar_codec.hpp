@@ -26,8 +26,8 @@
 #include <string>
 #include <string_view>
 
-#include "gizmo/core/std_compat.hpp"
 #include "gizmo/core/math/scalar.hpp"
+#include "gizmo/core/std_compat.hpp"
 #include "gizmo/replay/bytes.hpp"
 
 namespace gizmo::replay {
@@ -39,8 +39,7 @@ namespace detail {
 
 inline constexpr std::uint8_t kSameAsBase = 0xFF;
 
-[[noreturn, gnu::cold]] void throwBadControl(std::size_t offset, std::uint8_t control,
-                                             std::size_t width);
+[[noreturn, gnu::cold]] void throwBadControl(std::size_t offset, std::uint8_t control, std::size_t width);
 [[noreturn, gnu::cold]] void throwRedundantControl(std::size_t offset);
 [[noreturn, gnu::cold]] void throwNonCanonicalLongDouble(std::size_t offset);
 
@@ -60,9 +59,7 @@ struct ScalarCodec<float> {
   using Bits = std::uint32_t;  // lets the compact form work on one register
   static Bits toBits(float v) { return gizmo::bitCast<Bits>(v); }
   static float fromBits(Bits b) { return gizmo::bitCast<float>(b); }
-  static std::array<std::uint8_t, kWidth> toBytes(const float& v) {
-    return detail::wordToBytes(toBits(v));
-  }
+  static std::array<std::uint8_t, kWidth> toBytes(const float& v) { return detail::wordToBytes(toBits(v)); }
   static float fromBytes(const std::array<std::uint8_t, kWidth>& b) {
     return fromBits(static_cast<Bits>(detail::loadLittleEndian(b.data(), kWidth)));
   }
@@ -75,9 +72,7 @@ struct ScalarCodec<double> {
   using Bits = std::uint64_t;
   static Bits toBits(double v) { return gizmo::bitCast<Bits>(v); }
   static double fromBits(Bits b) { return gizmo::bitCast<double>(b); }
-  static std::array<std::uint8_t, kWidth> toBytes(const double& v) {
-    return detail::wordToBytes(toBits(v));
-  }
+  static std::array<std::uint8_t, kWidth> toBytes(const double& v) { return detail::wordToBytes(toBits(v)); }
   static double fromBytes(const std::array<std::uint8_t, kWidth>& b) {
     return fromBits(detail::loadLittleEndian(b.data(), kWidth));
   }
@@ -168,9 +163,13 @@ struct ScalarCodec<MpfrReal> {
 namespace detail {
 
 template <class Real>
-concept WordCodec = requires { typename ScalarCodec<Real>::Bits; };
+concept WordCodec = requires {
+  typename ScalarCodec<Real>::Bits;
+};
 template <class Real>
-concept FixedWidthCodec = requires { ScalarCodec<Real>::kWidth; };
+concept FixedWidthCodec = requires {
+  ScalarCodec<Real>::kWidth;
+};
 template <class Real>
 concept HasCanonicalCheck = requires(const std::array<std::uint8_t, ScalarCodec<Real>::kWidth>& b) {
   { ScalarCodec<Real>::isCanonical(b) } -> std::same_as<bool>;
@@ -231,8 +230,7 @@ inline std::uint8_t* putXorBytes(std::uint8_t* p, const std::array<std::uint8_t,
 }
 
 template <std::size_t Width>
-inline std::array<std::uint8_t, Width> readXorBytes(ByteReader& in,
-                                                    const std::array<std::uint8_t, Width>& base) {
+inline std::array<std::uint8_t, Width> readXorBytes(ByteReader& in, const std::array<std::uint8_t, Width>& base) {
   const std::size_t at = in.position();
   const std::uint8_t control = in.u8();
   if (control == kSameAsBase) return base;
@@ -253,13 +251,13 @@ inline std::array<std::uint8_t, Width> readXorBytes(ByteReader& in,
 template <class Real>
 inline constexpr std::size_t kMaxCompactBytes = 0;
 template <class Real>
-  requires detail::FixedWidthCodec<Real>
+requires detail::FixedWidthCodec<Real>
 inline constexpr std::size_t kMaxCompactBytes<Real> = 1 + ScalarCodec<Real>::kWidth;
 
 // The compact form of a fixed-width scalar stored at p, which must have room for
 // kMaxCompactBytes<Real>; returns the end. For runs of writes claimed at once (ByteWriter::claim).
 template <class Real>
-  requires detail::FixedWidthCodec<Real>
+requires detail::FixedWidthCodec<Real>
 [[gnu::always_inline]] inline std::uint8_t* putScalar(std::uint8_t* p, const Real& value, const Real& base) {
   using Codec = ScalarCodec<Real>;
   if constexpr (detail::WordCodec<Real>) return detail::putXorWord(p, Codec::toBits(value) ^ Codec::toBits(base));

@@ -14,7 +14,8 @@ namespace gizmo::verify {
 class DrivenBoardAccess final : public BoardAccess<double> {
  public:
   using BallLookup = std::function<Ball<double>&(GizmoId)>;
-  DrivenBoardAccess(const PhysicsParams<double>& params, BallLookup balls) : params_(params), balls_(std::move(balls)) {}
+  DrivenBoardAccess(const PhysicsParams<double>& params, BallLookup balls)
+      : params_(params), balls_(std::move(balls)) {}
 
   void setNow(double t) { now_ = t; }
   const double& now() const override { return now_; }

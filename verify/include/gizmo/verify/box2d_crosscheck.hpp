@@ -17,7 +17,7 @@ namespace gizmo::verify {
 struct CrosscheckOptions {
   RunRequest request;
   std::vector<double> steps{1.0 / 60, 1.0 / 120, 1.0 / 240, 1.0 / 480};
-  Box2dOptions box2d;  // its dt is replaced by each of `steps`
+  Box2dOptions box2d;             // its dt is replaced by each of `steps`
   bool keepBox2dSamples = false;  // hand each step size's Box2D samples back (for a path file)
 };
 
@@ -33,8 +33,8 @@ struct UnmatchedCollision {
 struct PartingCheck {
   double time = 0;
   std::vector<Vec2<double>> ours, theirs, reference;  // every ball, in the board's order
-  double oursOff = 0, theirsOff = 0;                   // max over balls of |p − p_mpfr256|
-  std::string agreesWith;                              // "ours" or "theirs" (the nearer; ours on a tie)
+  double oursOff = 0, theirsOff = 0;                  // max over balls of |p − p_mpfr256|
+  std::string agreesWith;                             // "ours" or "theirs" (the nearer; ours on a tie)
 };
 inline constexpr double kPartingLevel = 0.1;  // L: one of kDivergenceLevels
 
@@ -42,28 +42,28 @@ inline constexpr std::array<double, 3> kDivergenceLevels{0.01, 0.1, 1.0};
 
 struct StepComparison {
   double dt = 0;
-  double end = 0;                       // the run's length (both sides ran on by the window)
-  double matchWindow = 0;               // seconds: collisions further apart never match
+  double end = 0;          // the run's length (both sides ran on by the window)
+  double matchWindow = 0;  // seconds: collisions further apart never match
   std::uint64_t steps = 0;
-  bool collisionsCompared = true;       // false: the engine reported no contacts (a trace may not)
+  bool collisionsCompared = true;  // false: the engine reported no contacts (a trace may not)
   std::size_t theirCollisions = 0;
   std::size_t matched = 0;
-  std::size_t missedByThem = 0;         // ours, unmatched
-  std::size_t missedByUs = 0;           // the engine's, unmatched
-  double maxTimeError = 0;              // over matched: |t_box2d − t_ours|
+  std::size_t missedByThem = 0;  // ours, unmatched
+  std::size_t missedByUs = 0;    // the engine's, unmatched
+  double maxTimeError = 0;       // over matched: |t_box2d − t_ours|
   double meanTimeError = 0;
-  double maxPositionError = 0;          // over matched: |p_box2d − p_ours|, L
-  std::size_t matchedWithinToi = 0;     // matched with a position error within Box2D's TOI target + tolerance
+  double maxPositionError = 0;       // over matched: |p_box2d − p_ours|, L
+  std::size_t matchedWithinToi = 0;  // matched with a position error within Box2D's TOI target + tolerance
   std::optional<UnmatchedCollision> firstUnmatched;
   std::uint64_t speedCappedSteps = 0;     // counted over the run and the window after it,
   std::uint64_t rotationCappedSteps = 0;  // as is wallSeconds
-  double maxDivergence = 0;             // max over samples and balls of |p_box2d − p_ours|
+  double maxDivergence = 0;               // max over samples and balls of |p_box2d − p_ours|
   std::array<std::optional<double>, kDivergenceLevels.size()> divergenceFrom;  // first time above each level
-  std::optional<PartingCheck> parting;  // at divergenceFrom's kPartingLevel, when the paths part
+  std::optional<PartingCheck> parting;                // at divergenceFrom's kPartingLevel, when the paths part
   std::vector<std::pair<double, double>> divergence;  // (time, max distance), at most 50 evenly spread samples
-  double energyEnd = 0;                 // the engine's, at the end
-  double maxEnergyDifference = 0;       // max over samples of |E_theirs − E_ours| / max(|E_ours|, |E_start|)
-  double wallSeconds = 0;               // the engine's (a trace's own figure, 0 when it gives none)
+  double energyEnd = 0;                               // the engine's, at the end
+  double maxEnergyDifference = 0;  // max over samples of |E_theirs − E_ours| / max(|E_ours|, |E_start|)
+  double wallSeconds = 0;          // the engine's (a trace's own figure, 0 when it gives none)
   // Box2D's balls after each step, from time 0 to the end and the window after it; only with
   // CrosscheckOptions::keepBox2dSamples.
   std::vector<TrajectorySample> box2dSamples;
@@ -72,7 +72,7 @@ struct StepComparison {
 struct CrosscheckReport {
   std::size_t ourCollisions = 0;
   std::uint64_t ourEvents = 0;
-  double ourWallSeconds = 0;   // an unobserved run of the same request
+  double ourWallSeconds = 0;  // an unobserved run of the same request
   double energyStart = 0;
   double ourEnergyEnd = 0;
   std::vector<StepComparison> steps;

@@ -44,7 +44,7 @@ struct Box2dPart {
 // One body. Parts are in the body's own frame; the body stands at `origin` turned by `angle`
 // (radians, from +x towards +y, as Box2D's angle in these coordinates).
 struct Box2dBody {
-  std::string name;        // the gizmo's name; OuterWalls for the walls
+  std::string name;  // the gizmo's name; OuterWalls for the walls
   GizmoType type = GizmoType::Square;
   bool walls = false;
   bool kinematic = false;  // a flipper or a spinner: turned on the core's schedule about its pivot

@@ -1,8 +1,8 @@
 #pragma once
 // The Box2D side of box2d_mapping.hpp: parts made into Box2D shapes. This header includes
 // Box2D; only the bridge's own sources (verify/src/box2d_*.cpp) use it.
-#include <box2d/box2d.h>
 #include <box2d/b2_time_of_impact.h>  // box2d.h does not include it
+#include <box2d/box2d.h>
 
 #include <memory>
 

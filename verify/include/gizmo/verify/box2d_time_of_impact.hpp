@@ -23,20 +23,23 @@ namespace gizmo::verify {
 // whole swing in one call, more than Box2D ever turns a body in one step (b2_maxRotation), where
 // b2TimeOfImpact is known to miss contacts (docs/verification.md).
 enum class SweepKind { Edge, Vertex, Circle, Ball, FlipperAtRest, FlipperSwinging, FlipperQuarterTurn };
-inline constexpr std::array<SweepKind, 7> kSweepKinds{SweepKind::Edge,          SweepKind::Vertex,
-                                                      SweepKind::Circle,        SweepKind::Ball,
-                                                      SweepKind::FlipperAtRest, SweepKind::FlipperSwinging,
+inline constexpr std::array<SweepKind, 7> kSweepKinds{SweepKind::Edge,
+                                                      SweepKind::Vertex,
+                                                      SweepKind::Circle,
+                                                      SweepKind::Ball,
+                                                      SweepKind::FlipperAtRest,
+                                                      SweepKind::FlipperSwinging,
                                                       SweepKind::FlipperQuarterTurn};
 std::string_view sweepKindName(SweepKind kind);
 
 struct StraightSweep {
   SweepKind kind = SweepKind::Edge;
-  bool walls = false;     // the obstacle is the outer walls (else `gizmo`, unless kind is Ball)
+  bool walls = false;  // the obstacle is the outer walls (else `gizmo`, unless kind is Ball)
   GizmoSpec gizmo;
-  Vec2<double> p, v;      // the ball: centre at time 0 and its constant velocity
+  Vec2<double> p, v;            // the ball: centre at time 0 and its constant velocity
   Vec2<double> otherP, otherV;  // Ball: the other ball
-  double swingStart = 0;  // a swinging flipper: how far into its forward swing it is at time 0, s
-  double duration = 1;    // the sweep covers [0, duration]
+  double swingStart = 0;        // a swinging flipper: how far into its forward swing it is at time 0, s
+  double duration = 1;          // the sweep covers [0, duration]
 };
 
 // A sweep of the given kind from numbers in [0, 1): the same mapping serves the rapidcheck
@@ -45,16 +48,16 @@ inline constexpr std::size_t kSweepRandoms = 8;
 StraightSweep makeSweep(SweepKind kind, const std::array<double, kSweepRandoms>& u);
 
 struct SweepVerdict {
-  std::optional<double> ours;     // our time of impact
-  std::string oursFeature;        // edge, vertex, circle, ball, flipper-side, flipper-end
-  std::string box2dState;         // touching, separated, overlapped, failed
-  std::optional<double> box2d;    // b2TimeOfImpact's time (touching only)
+  std::optional<double> ours;   // our time of impact
+  std::string oursFeature;      // edge, vertex, circle, ball, flipper-side, flipper-end
+  std::string box2dState;       // touching, separated, overlapped, failed
+  std::optional<double> box2d;  // b2TimeOfImpact's time (touching only)
   // Box2D's window: the earliest time the cores can come within target + tolerance, and the
   // latest by which they must come within target − tolerance (none: no contact required).
   std::optional<double> earliest, latest;
   bool explained = false;
-  std::string why;                // what is not explained (empty when explained)
-  double depth = 0;               // our gap at Box2D's time, negated (touching only)
+  std::string why;   // what is not explained (empty when explained)
+  double depth = 0;  // our gap at Box2D's time, negated (touching only)
 };
 SweepVerdict compareSweep(const StraightSweep& sweep);
 

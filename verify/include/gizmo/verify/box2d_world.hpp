@@ -15,8 +15,8 @@ namespace gizmo::verify {
 // One hit of a ball on a gizmo or on another ball (an absorber's capture counts).
 struct CollisionRecord {
   double time = 0;
-  std::string ball;   // for two balls: the name that sorts first
-  std::string other;  // the gizmo (OuterWalls for the walls), or the other ball
+  std::string ball;       // for two balls: the name that sorts first
+  std::string other;      // the gizmo (OuterWalls for the walls), or the other ball
   Vec2<double> position;  // the ball's centre at the hit
 };
 
@@ -35,17 +35,17 @@ struct RunRecord {
   std::vector<CollisionRecord> collisions;  // in time order
   std::vector<TrajectorySample> samples;    // from time 0, in time order
   double wallSeconds = 0;
-  std::uint64_t steps = 0;                  // Box2D steps (0 for our run)
-  std::uint64_t speedCappedSteps = 0;       // steps where a ball would move beyond b2_maxTranslation
-  std::uint64_t rotationCappedSteps = 0;    // steps where a flipper would turn beyond b2_maxRotation
+  std::uint64_t steps = 0;                // Box2D steps (0 for our run)
+  std::uint64_t speedCappedSteps = 0;     // steps where a ball would move beyond b2_maxTranslation
+  std::uint64_t rotationCappedSteps = 0;  // steps where a flipper would turn beyond b2_maxRotation
 };
 
 struct Box2dOptions {
   double dt = 1.0 / 60;
-  bool bullet = true;                // the balls are bullets (continuous collision with each other)
-  bool continuous = true;            // continuous collision against static and kinematic bodies
-  double restitutionThreshold = 0;   // Box2D's default is 1 m/s: slower hits do not bounce
-  int velocityIterations = 8;        // Box2D's recommended values
+  bool bullet = true;               // the balls are bullets (continuous collision with each other)
+  bool continuous = true;           // continuous collision against static and kinematic bodies
+  double restitutionThreshold = 0;  // Box2D's default is 1 m/s: slower hits do not bounce
+  int velocityIterations = 8;       // Box2D's recommended values
   int positionIterations = 3;
 };
 

@@ -83,7 +83,7 @@ struct UncertifiedDecision {
   ExactBound time;
   EventRef executed;
   UncertifiedReason reason = UncertifiedReason::Undecided;
-  EventRef other;  // the rival that could not be separated (or the moving arm)
+  EventRef other;     // the rival that could not be separated (or the moving arm)
   ExactBound window;  // Undecided: both may lie in a window this wide (inf: no bound found)
 };
 

@@ -20,10 +20,12 @@ inline constexpr double kPastWindow = 0x1p-32;
 template <class I>
 class Decider {
  public:
-  Decider(const BoardLayout& layout, const SearchLimits& limits) : layout_(layout), limits_(limits), r_(layout.ballRadius) {
+  Decider(const BoardLayout& layout, const SearchLimits& limits)
+      : layout_(layout), limits_(limits), r_(layout.ballRadius) {
     fixed_.resize(layout.gizmos.size());
     for (const LayoutGizmo& g : layout.gizmos)
-      if (g.kind == LayoutKind::FixedShape || g.kind == LayoutKind::Absorber) fixed_[std::size_t(g.id)] = geometryOf(g.shape);
+      if (g.kind == LayoutKind::FixedShape || g.kind == LayoutKind::Absorber)
+        fixed_[std::size_t(g.id)] = geometryOf(g.shape);
   }
 
   RungOutcome decide(const BoardSnapshot& snap, const DecisionInput& in) {
@@ -72,7 +74,8 @@ class Decider {
         best_.other = keyOf(in.nextScheduled);
         best_.otherIsScheduled = true;
         best_.window = widthUpper(hull(hull(lo_, hi_), windowEnd_));
-        best_.overlaps.push_back(Overlap{best_.other, true, true, true, lowerDouble(windowEnd_), upperDouble(windowEnd_)});
+        best_.overlaps.push_back(
+            Overlap{best_.other, true, true, true, lowerDouble(windowEnd_), upperDouble(windowEnd_)});
       }
     } else {
       competitorEnd_ = end;
@@ -164,9 +167,12 @@ class Decider {
       return;
     }
     const std::size_t i = ballSlot(e.b);
-    featureGaps(e.a, i, [&](const auto& gap) {
-      if (sameEvent(gap.key, executed_)) keepOwn(gap);
-    }, /*skipOwn=*/false);
+    featureGaps(
+        e.a, i,
+        [&](const auto& gap) {
+          if (sameEvent(gap.key, executed_)) keepOwn(gap);
+        },
+        /*skipOwn=*/false);
   }
   void keepOwn(const Gap<I>& gap) { own_.push_back(gap); }
   void keepOwn(const SwingGap<I>& gap) { ownSwing_.push_back(gap); }
@@ -311,7 +317,8 @@ class Decider {
       std::sort(candidates_.begin(), candidates_.end());
       candidates_.erase(std::unique(candidates_.begin(), candidates_.end()), candidates_.end());
       for (GizmoId g : candidates_) {
-        if (layout_.collider[std::size_t(layout_.ballIndex[std::size_t(ball.id)])][std::size_t(g)] == kNoGizmo) continue;
+        if (layout_.collider[std::size_t(layout_.ballIndex[std::size_t(ball.id)])][std::size_t(g)] == kNoGizmo)
+          continue;
         if (!box.overlaps(layout_.gizmos[std::size_t(g)].bounds)) continue;
         if (layout_.gizmos[std::size_t(g)].kind == LayoutKind::Absorber && firedInside(g, ball.id)) {
           const EventKey key{EventKind::Leave, g, ball.id, 0};

@@ -23,7 +23,7 @@ namespace gizmo::verify::detail {
 
 // How much work one rung may spend per gap.
 struct SearchLimits {
-  int pieces = 48;         // subdivisions of the window per gap
+  int pieces = 48;          // subdivisions of the window per gap
   int narrowingSteps = 64;  // bisections that tighten a proven entry
 };
 
@@ -106,7 +106,8 @@ Box<double> sweptBoxOf(const Motion<I>& m, const I& S, double r) {
   const I sx = m.p.x + S * (m.v.x + S * m.h.x), sy = m.p.y + S * (m.v.y + S * m.h.y);
   const I R(r);
   const I lox = lowerEnd(sx) - R, hix = upperEnd(sx) + R, loy = lowerEnd(sy) - R, hiy = upperEnd(sy) + R;
-  return Box<double>{Vec2<double>(lowerDouble(lox), lowerDouble(loy)), Vec2<double>(upperDouble(hix), upperDouble(hiy))};
+  return Box<double>{Vec2<double>(lowerDouble(lox), lowerDouble(loy)),
+                     Vec2<double>(upperDouble(hix), upperDouble(hiy))};
 }
 
 // Exact geometry: end points are exact doubles; the unit direction and normal are enclosed.

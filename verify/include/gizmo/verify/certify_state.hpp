@@ -20,8 +20,8 @@ struct LayoutGizmo {
   GizmoId id = kNoGizmo;
   LayoutKind kind = LayoutKind::FixedShape;
   std::string name;
-  Shape<double> shape;   // fixed shapes and absorbers (a flipper's comes with each state)
-  Box<double> bounds;    // everything the gizmo can ever touch (a flipper: its 2 × 2 box)
+  Shape<double> shape;           // fixed shapes and absorbers (a flipper's comes with each state)
+  Box<double> bounds;            // everything the gizmo can ever touch (a flipper: its 2 × 2 box)
   std::array<double, 4> rect{};  // absorbers: x, y, width, height
   // Flippers: the pivot centre, the quarter turns of the rest and end positions, and the sense
   // of the forward swing (+1: θ grows), as flipperLayout gives them. Spinners: the centre.
@@ -86,7 +86,7 @@ struct AbsorberSnapshot {
 
 struct BoardSnapshot {
   double now = 0;
-  std::vector<BallSnapshot> balls;          // in the order of BoardLayout::balls
+  std::vector<BallSnapshot> balls;  // in the order of BoardLayout::balls
   std::vector<FlipperSnapshot> flippers;
   std::vector<SpinnerSnapshot> spinners;
   std::vector<AbsorberSnapshot> absorbers;
@@ -124,9 +124,9 @@ inline bool tieOrderBefore(const EventKey& x, const EventKey& y) {
 // (certify_exact.hpp). Times are s = t − now, rounded outwards to doubles.
 struct Overlap {
   EventKey key;
-  bool scheduled = false;   // the next scheduled event (its time is exact: DecisionInput::nextScheduled)
-  bool entry = false;       // a proven entry in [lo, hi]; otherwise it may lie anywhere in [lo, hi]
-  bool polynomial = true;   // its gap is a polynomial (not a swinging flipper's or turning spinner's side or tip)
+  bool scheduled = false;  // the next scheduled event (its time is exact: DecisionInput::nextScheduled)
+  bool entry = false;      // a proven entry in [lo, hi]; otherwise it may lie anywhere in [lo, hi]
+  bool polynomial = true;  // its gap is a polynomial (not a swinging flipper's or turning spinner's side or tip)
   double lo = 0, hi = 0;
 };
 
@@ -134,10 +134,10 @@ struct Overlap {
 enum class Verdict : std::uint8_t { Certified, Wrong, Undecided, Tie };
 struct RungOutcome {
   Verdict verdict = Verdict::Undecided;
-  EventKey other;               // Wrong: the event that should have come first; Undecided: the rival
+  EventKey other;  // Wrong: the event that should have come first; Undecided: the rival
   bool otherIsScheduled = false;
-  double byLo = 0, byHi = 0;    // Wrong: it came first by at least byLo and at most byHi seconds
-  double window = 0;            // Undecided: both may lie in one window this wide (seconds); inf if unknown
+  double byLo = 0, byHi = 0;  // Wrong: it came first by at least byLo and at most byHi seconds
+  double window = 0;          // Undecided: both may lie in one window this wide (seconds); inf if unknown
   std::string explanation;
   // Undecided: the executed event's own enclosure (s, outwards; a root event's entry, or the
   // scheduled time) and every event overlapping it.

@@ -92,9 +92,9 @@ SwingGap<I> swingGapOf(const Motion<I>& m, const SwingAxis<I>& axis, const I& r,
 
 template <class I>
 struct SwingValues {
-  I g, dg;     // the gap and its derivative
-  I along;     // sides: q·u, the contact point's distance from the pivot along the axis
-  I across;    // sides: σk (q·n), the centre's height over the axis on this side
+  I g, dg;   // the gap and its derivative
+  I along;   // sides: q·u, the contact point's distance from the pivot along the axis
+  I across;  // sides: σk (q·n), the centre's height over the axis on this side
 };
 
 // The gap over S (a piece, or a point), by plain interval evaluation; the slope only on request.

@@ -47,15 +47,14 @@ class Interval {
   friend Interval operator+(const Interval& a, const Interval& b) {
     return Interval(-((-a.lo_) - b.lo_), a.hi_ + b.hi_);
   }
-  friend Interval operator-(const Interval& a, const Interval& b) {
-    return Interval(-(b.hi_ - a.lo_), a.hi_ - b.lo_);
-  }
+  friend Interval operator-(const Interval& a, const Interval& b) { return Interval(-(b.hi_ - a.lo_), a.hi_ - b.lo_); }
   friend Interval operator-(const Interval& a) { return Interval(-a.hi_, -a.lo_); }
   friend Interval operator*(const Interval& a, const Interval& b) {
     // Upper: the largest of the four end products rounded up. Lower: the smallest, as minus the
     // largest of the products with one factor negated (each rounded up).
     const double hi = std::max(std::max(a.lo_ * b.lo_, a.lo_ * b.hi_), std::max(a.hi_ * b.lo_, a.hi_ * b.hi_));
-    const double nlo = std::max(std::max((-a.lo_) * b.lo_, (-a.lo_) * b.hi_), std::max((-a.hi_) * b.lo_, (-a.hi_) * b.hi_));
+    const double nlo =
+        std::max(std::max((-a.lo_) * b.lo_, (-a.lo_) * b.hi_), std::max((-a.hi_) * b.lo_, (-a.hi_) * b.hi_));
     return Interval(-nlo, hi);
   }
   friend Interval operator/(const Interval& a, const Interval& b) {

@@ -27,7 +27,7 @@ struct PrecisionResult {
   std::uint64_t events = 0;    // executed
   std::uint64_t compared = 0;  // the events that change the board: all but recalculations
   double endTime = 0;
-  std::string stopped;            // why the run ended early (an irrational value, a stall), or empty
+  std::string stopped;              // why the run ended early (an irrational value, a stall), or empty
   std::uint64_t horizonEvents = 0;  // leading compared events that agree with the reference's
   double horizonTime = 0;           // the reference's time of the first event that differs
   std::string difference;           // the two decisions there, in words
@@ -37,12 +37,12 @@ struct PrecisionResult {
   double energyDrift = 0;           // |E − E_ref| after the last agreeing event, relative to E_ref
   double wallSeconds = 0;           // an unobserved run of the same request
   double eventsPerSecond = 0;
-  double costRatio = 0;             // wall time / double's (0 when double was not run)
+  double costRatio = 0;  // wall time / double's (0 when double was not run)
 };
 
 struct LadderOptions {
   RunRequest request;
-  std::vector<PrecisionChoice> precisions;  // in the order to report
+  std::vector<PrecisionChoice> precisions;   // in the order to report
   std::optional<PrecisionChoice> reference;  // default: rational if the scene allows, else mpfr:256
   // Where the run cannot be exact throughout, certify the double run's decisions instead
   // (certify.hpp): the check goes on with certified arithmetic where exact arithmetic stops.

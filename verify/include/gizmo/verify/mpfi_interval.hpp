@@ -15,13 +15,22 @@ class MpfiInterval {
   static void setWorkingBits(long bits) { bits_() = bits; }
   static long workingBits() { return bits_(); }
 
-  MpfiInterval() { mpfi_init2(v_, bits_()); mpfi_set_si(v_, 0); }
-  explicit MpfiInterval(double x) { mpfi_init2(v_, bits_()); mpfi_set_d(v_, x); }
+  MpfiInterval() {
+    mpfi_init2(v_, bits_());
+    mpfi_set_si(v_, 0);
+  }
+  explicit MpfiInterval(double x) {
+    mpfi_init2(v_, bits_());
+    mpfi_set_d(v_, x);
+  }
   MpfiInterval(double lo, double hi) {
     mpfi_init2(v_, bits_());
     mpfi_interv_d(v_, lo, hi);
   }
-  MpfiInterval(const MpfiInterval& o) { mpfi_init2(v_, mpfi_get_prec(o.v_)); mpfi_set(v_, o.v_); }
+  MpfiInterval(const MpfiInterval& o) {
+    mpfi_init2(v_, mpfi_get_prec(o.v_));
+    mpfi_set(v_, o.v_);
+  }
   MpfiInterval(MpfiInterval&& o) noexcept {
     mpfi_init2(v_, mpfi_get_prec(o.v_));
     mpfi_swap(v_, o.v_);
@@ -138,9 +147,7 @@ class MpfiInterval {
 
   friend bool certainlyPositive(const MpfiInterval& x) { return mpfr_sgn(&x.v_->left) > 0; }
   friend bool certainlyNegative(const MpfiInterval& x) { return mpfr_sgn(&x.v_->right) < 0; }
-  friend bool isExactZero(const MpfiInterval& x) {
-    return mpfr_zero_p(&x.v_->left) && mpfr_zero_p(&x.v_->right);
-  }
+  friend bool isExactZero(const MpfiInterval& x) { return mpfr_zero_p(&x.v_->left) && mpfr_zero_p(&x.v_->right); }
   friend bool certainlyBefore(const MpfiInterval& a, const MpfiInterval& b) {
     return mpfr_less_p(&a.v_->right, &b.v_->left);
   }

@@ -18,11 +18,11 @@ namespace gizmo::verify {
 // One scene of the suite (study_suite.hpp reads them).
 struct StudyScene {
   std::string name;
-  std::string board;        // the board file as the manifest names it
-  RunRequest request;       // its duration is the scene's (the model is set per method)
-  double sampleEvery = 0;   // ball positions are compared every this many seconds, from 0
-  bool stress = false;      // a scene where methods are known to struggle: in the stability map
-  std::string note;         // what the scene is for, in a few words
+  std::string board;       // the board file as the manifest names it
+  RunRequest request;      // its duration is the scene's (the model is set per method)
+  double sampleEvery = 0;  // ball positions are compared every this many seconds, from 0
+  bool stress = false;     // a scene where methods are known to struggle: in the stability map
+  std::string note;        // what the scene is for, in a few words
 };
 
 // Box2d: Box2D 2.4, linked in; Box2dV3: Box2D v3, run by the node program (box2d3_run.hpp).
@@ -65,11 +65,11 @@ struct Spread {
 struct MethodResult {
   std::string scene;
   StudyMethod method;
-  bool reference = false;     // this run is the reference
-  std::string stopped;        // why the run ended early, if it did: it then counts as failed
+  bool reference = false;  // this run is the reference
+  std::string stopped;     // why the run ended early, if it did: it then counts as failed
 
   // Cost: wall time of an unobserved run, over the repeats.
-  std::uint64_t events = 0;   // executed events (ours) or steps (Box2D)
+  std::uint64_t events = 0;  // executed events (ours) or steps (Box2D)
   Spread wallSeconds;
   Spread secondsPerBoardSecond;
   Spread secondsPerEvent;

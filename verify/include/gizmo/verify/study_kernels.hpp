@@ -20,10 +20,10 @@ const char* kernelChartName(KernelChart chart);  // "time-of-impact", "event-loo
 // How a chart is titled and read, for the chart itself and the page.
 struct KernelChartText {
   const char* title;
-  const char* axis;      // the y axis
-  const char* what;      // what was measured and how to read it, in a sentence or two
-  bool logScale;         // times that span orders of magnitude
-  double line;           // a dashed line at this value (0: none), named by lineLabel
+  const char* axis;  // the y axis
+  const char* what;  // what was measured and how to read it, in a sentence or two
+  bool logScale;     // times that span orders of magnitude
+  double line;       // a dashed line at this value (0: none), named by lineLabel
   const char* lineLabel;
 };
 const KernelChartText& kernelChartText(KernelChart chart);

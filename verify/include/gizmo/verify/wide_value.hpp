@@ -14,9 +14,15 @@ class WideValue {
   // up to this many bits; wider MPFR values and rationals are rounded to it.
   static constexpr mpfr_prec_t kBits = 512;
 
-  WideValue() { mpfr_init2(v_, kBits); mpfr_set_zero(v_, 1); }
+  WideValue() {
+    mpfr_init2(v_, kBits);
+    mpfr_set_zero(v_, 1);
+  }
   ~WideValue() { mpfr_clear(v_); }
-  WideValue(const WideValue& o) { mpfr_init2(v_, kBits); mpfr_set(v_, o.v_, MPFR_RNDN); }
+  WideValue(const WideValue& o) {
+    mpfr_init2(v_, kBits);
+    mpfr_set(v_, o.v_, MPFR_RNDN);
+  }
   WideValue& operator=(const WideValue& o) {
     mpfr_set(v_, o.v_, MPFR_RNDN);
     return *this;

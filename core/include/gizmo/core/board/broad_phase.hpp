@@ -45,8 +45,8 @@ class BroadPhase {
     bool operator==(const CellRange&) const = default;
   };
   static CellRange cellsOf(const Box<Real>& b) {
-    return CellRange{detail::cellOf(toDouble(b.lo.x)), detail::cellOf(toDouble(b.hi.x)), detail::cellOf(toDouble(b.lo.y)),
-                     detail::cellOf(toDouble(b.hi.y))};
+    return CellRange{detail::cellOf(toDouble(b.lo.x)), detail::cellOf(toDouble(b.hi.x)),
+                     detail::cellOf(toDouble(b.lo.y)), detail::cellOf(toDouble(b.hi.y))};
   }
 
   // Forgets everything listed; the board has `gizmos` gizmos (ids 0 to gizmos − 1).
@@ -60,7 +60,8 @@ class BroadPhase {
   void grow() { ballCells_.push_back(kNowhere); }
 
   void addFixed(GizmoId g, const Box<Real>& bounds) {
-    forEachCell(cellsOf(bounds), [&](std::vector<GizmoId>& cell) { cell.push_back(g); }, fixed_);
+    forEachCell(
+        cellsOf(bounds), [&](std::vector<GizmoId>& cell) { cell.push_back(g); }, fixed_);
   }
 
   // Moves a ball's entries to the cells `box` covers, or to the wide balls (to none when not
@@ -71,15 +72,15 @@ class BroadPhase {
     // Most moves stay within the same cells (the order within a cell or among the wide balls
     // does not matter: the candidates taken from them are sorted by id).
     if (now == old) return;
-    if (isWide(old))
-      std::erase(wideBalls_, id);
+    if (isWide(old)) std::erase(wideBalls_, id);
     else
-      forEachCell(old, [&](std::vector<GizmoId>& cell) { std::erase(cell, id); }, balls_);
+      forEachCell(
+          old, [&](std::vector<GizmoId>& cell) { std::erase(cell, id); }, balls_);
     old = now;
-    if (isWide(old))
-      wideBalls_.push_back(id);
+    if (isWide(old)) wideBalls_.push_back(id);
     else
-      forEachCell(old, [&](std::vector<GizmoId>& cell) { cell.push_back(id); }, balls_);
+      forEachCell(
+          old, [&](std::vector<GizmoId>& cell) { cell.push_back(id); }, balls_);
   }
 
   // Every fixed gizmo listed in a cell the box covers (the walls are in none: they meet a box
@@ -113,10 +114,10 @@ class BroadPhase {
         for (GizmoId id : grid[std::size_t(y * kBoardSize + x)]) visit(id);
   }
 
-  Grid fixed_;                          // 1 L cells → fixed gizmos that reach into them
-  Grid balls_;                          // 1 L cells → free balls whose boxes reach in
+  Grid fixed_;  // 1 L cells → fixed gizmos that reach into them
+  Grid balls_;  // 1 L cells → free balls whose boxes reach in
   std::vector<GizmoId> wideBalls_;
-  std::vector<CellRange> ballCells_;    // per gizmo: the cells its box covers (in balls_, or wide)
+  std::vector<CellRange> ballCells_;  // per gizmo: the cells its box covers (in balls_, or wide)
 };
 
 }  // namespace gizmo

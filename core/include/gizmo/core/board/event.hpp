@@ -12,14 +12,14 @@ inline constexpr GizmoId kNoGizmo = -1;
 // The order of this enum is the tie order for events at the same instant (docs/physics.md §5):
 // physical contacts first, then what the models add, input, and the bookkeeping events last.
 enum class EventKind : std::uint8_t {
-  Collision,    // seed: a collision between collider (a) and collidee (b) through feature
-  Leave,        // a ball that an absorber fired leaves its rectangle (a = absorber, b = ball)
-  ContactEnd,   // a ball sliding on a surface reaches the end of it (a = ball)
-  FlipperStop,  // a swinging flipper reaches its end or rest angle (a = flipper)
-  FrictionTick, // ballistic model: friction applied at time k·h (a = ball)
-  Input,        // a key press or release from the input script (feature = key, b = direction)
-  Recalculate,  // seed: recalculate-collision-time (a = the ball whose pairs are recomputed)
-  EndOfTick,    // seed: the end of the current tick
+  Collision,     // seed: a collision between collider (a) and collidee (b) through feature
+  Leave,         // a ball that an absorber fired leaves its rectangle (a = absorber, b = ball)
+  ContactEnd,    // a ball sliding on a surface reaches the end of it (a = ball)
+  FlipperStop,   // a swinging flipper reaches its end or rest angle (a = flipper)
+  FrictionTick,  // ballistic model: friction applied at time k·h (a = ball)
+  Input,         // a key press or release from the input script (feature = key, b = direction)
+  Recalculate,   // seed: recalculate-collision-time (a = the ball whose pairs are recomputed)
+  EndOfTick,     // seed: the end of the current tick
 };
 inline constexpr int kEventKindCount = 8;
 

@@ -128,7 +128,8 @@ class EventQueue {
     std::vector<Event<Real>> out;
     for (std::size_t i = 0; i < events_.size(); ++i)
       if (states_[i].alive) out.push_back(events_[i]);
-    std::sort(out.begin(), out.end(), [](const Event<Real>& x, const Event<Real>& y) { return x.sequence < y.sequence; });
+    std::sort(out.begin(), out.end(),
+              [](const Event<Real>& x, const Event<Real>& y) { return x.sequence < y.sequence; });
     return out;
   }
   std::uint64_t nextSequence() const { return nextSequence_; }
@@ -306,7 +307,7 @@ class EventQueue {
   }
 
   std::vector<Event<Real>> events_;  // by slot
-  std::vector<SlotState> states_;   // by slot
+  std::vector<SlotState> states_;    // by slot
   std::vector<HeapEntry> heap_;
   std::vector<std::uint32_t> freeSlots_;
   std::vector<std::vector<Handle>> byGizmo_;

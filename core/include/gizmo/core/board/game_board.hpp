@@ -164,15 +164,15 @@ class GameBoard final : private BoardAccess<Real> {
 
   // Built once per board change.
   bool built_ = false;
-  std::vector<std::int32_t> ballIndex_;        // gizmo id → index into balls_, or −1
+  std::vector<std::int32_t> ballIndex_;  // gizmo id → index into balls_, or −1
   ColliderTable<Real> colliders_;
   GizmoId colliderOf(GizmoId ball, GizmoId other) const {
     return colliders_.colliderOf(std::size_t(ballIndex_[std::size_t(ball)]), ball, other);
   }
   BroadPhase<Real> broadPhase_;
-  std::vector<Box<Real>> boxes_;               // per gizmo: where it can be until validUntil_
-  std::vector<Real> validUntil_;               // per gizmo: its predictions hold until then
-  std::vector<std::uint32_t> stamp_;           // marks the gizmos of the current recomputation
+  std::vector<Box<Real>> boxes_;      // per gizmo: where it can be until validUntil_
+  std::vector<Real> validUntil_;      // per gizmo: its predictions hold until then
+  std::vector<std::uint32_t> stamp_;  // marks the gizmos of the current recomputation
   std::uint32_t stampNow_ = 0;
   // coverUntilNextEvent: whether it runs, a number for each call, and per gizmo the call that
   // last extended it (a ball extended a second time in one call is swept to the tick's end).
@@ -186,7 +186,7 @@ class GameBoard final : private BoardAccess<Real> {
   std::vector<GizmoId> starting_;
   std::vector<GizmoId> recomputing_;  // recomputePending's working list, kept for its capacity
   std::vector<GizmoId> candidates_;
-  IdSet candidateSet_;                 // gathers candidates_ in id order, without repeats
+  IdSet candidateSet_;  // gathers candidates_ in id order, without repeats
   std::array<std::uint64_t, kEventKindCount> executed_{};
   std::uint64_t executedTotal_ = 0;
   RunLimit limit_;

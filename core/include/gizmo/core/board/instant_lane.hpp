@@ -135,10 +135,10 @@ class InstantLane {
     for (Instant& in : instants_) in.words.resize(slotOf_.size() / 64 + 1, 0);
   }
 
-  std::vector<Instant> instants_;       // in use (listed in order_) or not (in unused_)
-  std::vector<std::uint32_t> order_;    // the instants in use, in ascending time; none empty
+  std::vector<Instant> instants_;     // in use (listed in order_) or not (in unused_)
+  std::vector<std::uint32_t> order_;  // the instants in use, in ascending time; none empty
   std::vector<std::uint32_t> unused_;
-  std::vector<std::uint32_t> slotOf_;   // by gizmo id: the slot of its event in the lane
+  std::vector<std::uint32_t> slotOf_;  // by gizmo id: the slot of its event in the lane
   std::size_t size_ = 0;
 };
 

@@ -7,22 +7,22 @@ namespace gizmo {
 // Rules that the models apply beyond plain reflection (docs/physics.md §6: each is a recorded
 // decision).
 enum class ModelRule : std::uint8_t {
-  FrictionApplied,   // the friction law applied to a ball (ballistic: at a friction tick)
-  ContactBegin,      // a slow ball pressed onto a segment starts sliding along it
-  ContactEnd,        // it leaves that segment (end reached, or pushed off)
-  MinimumBounce,     // a slow hit on a round feature leaves at the minimum bounce speed
-  Wedged,            // a slow ball pressed onto a second surface while sliding comes to rest
-  FlipperBlocked,    // a flipper pinching a ball stops where it is
-  Captured,          // an absorber captured a ball
-  Released,          // an absorber fired a ball
-  Jammed,            // too many hits at one instant: this one leaves no rebound (see docs/physics.md)
-  Boosted,           // a booster doubled a ball's speed
-  Teleported,        // a teleporter moved a ball to its exit
-  Sunk,              // a sink took a ball out of play
-  SpinnerBlocked,    // a spinner pinching a ball stops where it stands
-  Spawned,           // a spawner put a ball at its centre (the other gizmo: that ball)
-  SpawnBlocked,      // a spawner acted with no room at its centre, or no ball to be had
-  Settled,           // a ball slower than restSpeed on a level surface stops (docs/physics.md, "Piles")
+  FrictionApplied,  // the friction law applied to a ball (ballistic: at a friction tick)
+  ContactBegin,     // a slow ball pressed onto a segment starts sliding along it
+  ContactEnd,       // it leaves that segment (end reached, or pushed off)
+  MinimumBounce,    // a slow hit on a round feature leaves at the minimum bounce speed
+  Wedged,           // a slow ball pressed onto a second surface while sliding comes to rest
+  FlipperBlocked,   // a flipper pinching a ball stops where it is
+  Captured,         // an absorber captured a ball
+  Released,         // an absorber fired a ball
+  Jammed,           // too many hits at one instant: this one leaves no rebound (see docs/physics.md)
+  Boosted,          // a booster doubled a ball's speed
+  Teleported,       // a teleporter moved a ball to its exit
+  Sunk,             // a sink took a ball out of play
+  SpinnerBlocked,   // a spinner pinching a ball stops where it stands
+  Spawned,          // a spawner put a ball at its centre (the other gizmo: that ball)
+  SpawnBlocked,     // a spawner acted with no room at its centre, or no ball to be had
+  Settled,          // a ball slower than restSpeed on a level surface stops (docs/physics.md, "Piles")
 };
 // The last rule: a log's rule value above it is refused. A rule is four bits of a record's tag
 // (replay/record_codec.hpp), so Settled is the last that fits without a new record kind.

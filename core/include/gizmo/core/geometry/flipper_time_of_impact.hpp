@@ -18,8 +18,8 @@ struct SwingingAxis {
   Vec2<Real> pivot;
   int baseQuarter = 0;
   Real phi0{0}, omega{0};
-  Real length{0};   // pivot centre to tip centre
-  Real radius{0};   // capsule radius
+  Real length{0};  // pivot centre to tip centre
+  Real radius{0};  // capsule radius
 
   Vec2<Real> direction(const Real& tau) const {
     Real s, c;
@@ -150,14 +150,15 @@ struct SwingTouch {
 // The velocity of the capsule's surface point under a ball centred at p (radius r, normal n
 // from the surface to the centre): ω × its offset from the pivot.
 template <class Real>
-Vec2<Real> swingSurfaceVelocity(const SwingingAxis<Real>& axis, const Vec2<Real>& p, const Real& r, const Vec2<Real>& n) {
+Vec2<Real> swingSurfaceVelocity(const SwingingAxis<Real>& axis, const Vec2<Real>& p, const Real& r,
+                                const Vec2<Real>& n) {
   const Vec2<Real> offset = p - r * n - axis.pivot;
   return axis.omega * Vec2<Real>(-offset.y, offset.x);
 }
 
 template <class Real>
-std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, const Real& r, const SwingingAxis<Real>& axis,
-                                             int feature) {
+std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, const Real& r,
+                                              const SwingingAxis<Real>& axis, int feature) {
   const Vec2<Real> u = axis.direction(Real(0));
   const Vec2<Real> q = ball.p - axis.pivot;
   const Real reach = r + axis.radius;
@@ -202,8 +203,8 @@ std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, cons
     touch.gap = distance - reach;
     const Vec2<Real> de = ball.v - (axis.length * axis.omega) * Vec2<Real>(-u.y, u.x);
     const Real radial = dot(de, touch.normal);
-    touch.bend = axis.length * axis.omega * axis.omega * dot(u, touch.normal) +
-                 (lengthSquared(de) - radial * radial) / distance;
+    touch.bend =
+        axis.length * axis.omega * axis.omega * dot(u, touch.normal) + (lengthSquared(de) - radial * radial) / distance;
   } else {
     return std::nullopt;
   }
@@ -223,7 +224,8 @@ std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, cons
 // at rest 2.2·10⁻¹⁶ L off a spinner's tip as the spinner started, a ball fell into the arm unmet
 // (campaign seed 1796527371, case 704: 8.5·10⁻⁹ L inside, then a stall).
 template <class Real>
-bool pressedIntoSwing(const Trajectory<Real>& at, const SwingTouch<Real>& touch, const Real& slack, const Real& restSpeed) {
+bool pressedIntoSwing(const Trajectory<Real>& at, const SwingTouch<Real>& touch, const Real& slack,
+                      const Real& restSpeed) {
   return !(slack < touch.gap) && dot(Vec2<Real>(at.v - touch.surfaceVelocity), touch.normal) < restSpeed / Real(2) &&
          Real(dot(at.a, touch.normal) + touch.bend) < Real(0);
 }
@@ -313,8 +315,7 @@ std::optional<SwingContact<Real>> sideEndComesUnder(const Trajectory<Real>& ball
   // circle is on it too: a still ball that a hit left 2.7e-14 L inside, twice its position
   // resolution, was passed by the side in the classic model; campaign seed 662607015, case 1669.)
   const Real half = Real(1) / Real(2);
-  const Real travel =
-      length(ball.v) * limit + half * length(ball.a) * limit * limit + positionResolution(ball.p);
+  const Real travel = length(ball.v) * limit + half * length(ball.a) * limit * limit + positionResolution(ball.p);
   if (travel < Real(length(Vec2<Real>(ball.p - axis.pivot)) - (r + axis.radius))) return std::nullopt;
   const SideGap<Real> behindEnd{ball, quarterTurned(axis), Real(0), Real(-1)};
   std::optional<int> feature;

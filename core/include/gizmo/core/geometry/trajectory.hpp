@@ -70,7 +70,7 @@ bool pathMayComeWithin(const Trajectory<Real>& t, const Real& T, const Vec2<Real
   const Vec2<Real> d = end - t.p, w = c - t.p;
   const Real along = dot(w, d), chord2 = lengthSquared(d);
   if (!(Real(0) < along)) return !(near2 < lengthSquared(w));                   // nearest: p(0)
-  if (!(along < chord2)) return !(near2 < lengthSquared(Vec2<Real>(c - end))); // nearest: p(T)
+  if (!(along < chord2)) return !(near2 < lengthSquared(Vec2<Real>(c - end)));  // nearest: p(T)
   const Real across = cross(w, d);
   return !(near2 * chord2 < across * across);  // distance² = across² / chord²
 }

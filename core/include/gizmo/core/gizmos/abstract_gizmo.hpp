@@ -28,7 +28,8 @@ enum class GizmoKind { Ball, OuterWalls, GIZMO_KINDS(GIZMO_KIND_ENUMERATOR) };
 // kinds of its own.
 constexpr GizmoKind gizmoKindOf(GizmoType t) { return GizmoKind(static_cast<int>(t) + 2); }
 
-template <class Real> class Ball;
+template <class Real>
+class Ball;
 
 // A predicted collision: when, and through which of the collider's features.
 template <class Real>
@@ -81,7 +82,6 @@ class BoardAccess {
   // could be had. The caller has checked that p has room.
   virtual GizmoId spawnBall(const Vec2<Real>& p) = 0;
 };
-
 
 template <class Real>
 class AbstractGizmo {

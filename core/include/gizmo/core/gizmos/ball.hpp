@@ -338,7 +338,8 @@ class Ball final : public AbstractGizmo<Real> {
                       const BoardAccess<Real>& board) const {
     const PhysicsParams<Real>& params = board.params();
     const Real slow2 = Real(2) * params.settleRise * absOf(params.gravity);
-    if (!(Real(closing * closing) < slow2) || !(lengthSquared(va) < slow2) || !(lengthSquared(vb) < slow2)) return false;
+    if (!(Real(closing * closing) < slow2) || !(lengthSquared(va) < slow2) || !(lengthSquared(vb) < slow2))
+      return false;
     return board.boxedAlong(b.id(), pb, Vec2<Real>(-n), this->id()) && board.boxedAlong(this->id(), pa, n, b.id());
   }
 

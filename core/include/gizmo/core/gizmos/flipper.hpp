@@ -106,7 +106,9 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     // resolution (pressedIntoSwing).
     const SwingingAxis<Real> axis = axisAt(now);
     auto pressedOn = [&params](const Trajectory<Real>& at, const Real& slack) {
-      return [&params, &at, slack](const SwingTouch<Real>& touch) { return pressedIntoSwing(at, touch, slack, params.restSpeed); };
+      return [&params, &at, slack](const SwingTouch<Real>& touch) {
+        return pressedIntoSwing(at, touch, slack, params.restSpeed);
+      };
     };
     const std::optional<int> pressed = touchedSwingFeature(t, r, axis, pressedOn(t, positionResolution(t.p)));
     if (pressed) return Contact<Real>{now, *pressed, EventKind::Collision};
@@ -119,13 +121,15 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
       best = Contact<Real>{now + *tau, 2, EventKind::Collision};
     const Real searchEnd = best ? Real(best->time - now) : horizon;
     if (const auto hit = swingingCapsuleTimeOfImpact(t, r, axis, searchEnd))
-      if (!best || now + hit->tau < best->time) best = Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
+      if (!best || now + hit->tau < best->time)
+        best = Contact<Real>{now + hit->tau, hit->feature, EventKind::Collision};
     // A ball on the pivot's circle that a side's end comes under (sideEndComesUnder), touching
     // the side then to within its position resolution and pressed into it.
     const Real endSearch = best ? Real(best->time - now) : horizon;
-    const auto reached = sideEndComesUnder(t, r, axis, endSearch, [&](const Trajectory<Real>& at, const SwingingAxis<Real>& then) {
-      return touchedSwingFeature(at, r, then, pressedOn(at, positionResolution(at.p)));
-    });
+    const auto reached =
+        sideEndComesUnder(t, r, axis, endSearch, [&](const Trajectory<Real>& at, const SwingingAxis<Real>& then) {
+          return touchedSwingFeature(at, r, then, pressedOn(at, positionResolution(at.p)));
+        });
     if (reached && (!best || now + reached->tau < best->time))
       best = Contact<Real>{now + reached->tau, reached->feature, EventKind::Collision};
     if (!best && !(toLimit < toStop)) best = strikeAsTheSwingEnds(*ball, r);
@@ -172,7 +176,8 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
       const std::optional<SwingTouch<Real>> touch =
           swingTouchNow(ball->trajectoryAt(now), Ball<Real>::radius(), axis, contact.feature);
       if (!touch) return;
-      ball->reflect(touch->normal, coefficient(), touch->surfaceVelocity, SurfaceType::Round, this->id(), nullptr, board, touch->bend);
+      ball->reflect(touch->normal, coefficient(), touch->surfaceVelocity, SurfaceType::Round, this->id(), nullptr,
+                    board, touch->bend);
     }
     countHit(ball->id(), board);
   }
@@ -235,7 +240,8 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
       u = axis.direction(Real(0));
     }
     Shape<Real> shape;
-    addCapsule(shape, pivot_, Vec2<Real>(pivot_ + fromDouble<Real>(kFlipperLength) * u), fromDouble<Real>(kFlipperRadius));
+    addCapsule(shape, pivot_, Vec2<Real>(pivot_ + fromDouble<Real>(kFlipperLength) * u),
+               fromDouble<Real>(kFlipperRadius));
     return shape;
   }
 

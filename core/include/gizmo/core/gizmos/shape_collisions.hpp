@@ -35,8 +35,9 @@ std::optional<FeatureHit<Real>> shapeTimeOfImpact(const Shape<Real>& shape, cons
   auto consider = [&](const std::optional<Real>& tau, std::int32_t feature) {
     if (tau && (!best || *tau < best->tau)) best = FeatureHit<Real>{*tau, feature};
   };
-  const SegmentFeature<Real>* contact =
-      slidingOn >= 0 && std::size_t(slidingOn) < shape.segments.size() ? &shape.segments[std::size_t(slidingOn)] : nullptr;
+  const SegmentFeature<Real>* contact = slidingOn >= 0 && std::size_t(slidingOn) < shape.segments.size()
+                                            ? &shape.segments[std::size_t(slidingOn)]
+                                            : nullptr;
   std::int32_t f = 0;
   for (const SegmentFeature<Real>& s : shape.segments) {
     if (f != slidingOn) consider(segmentTimeOfImpact(t, r, s, best ? best->tau : limit), f);

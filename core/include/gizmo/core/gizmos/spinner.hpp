@@ -105,8 +105,9 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
     const Real touching = positionResolution(t.p);
     for (int k = 0; k < 4; ++k) {
       const SwingingAxis<Real> axis = arm(static_cast<int>((quarter_ + turn.quarters + k) % 4), turn.phase);
-      const std::optional<int> pressed = touchedSwingFeature(
-          t, r, axis, [&](const SwingTouch<Real>& touch) { return pressedIntoSwing(t, touch, touching, params.restSpeed); });
+      const std::optional<int> pressed = touchedSwingFeature(t, r, axis, [&](const SwingTouch<Real>& touch) {
+        return pressedIntoSwing(t, touch, touching, params.restSpeed);
+      });
       if (pressed) return Contact<Real>{now, 4 * k + *pressed, EventKind::Collision};
     }
     std::optional<Contact<Real>> best;
@@ -135,11 +136,12 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
     if (!turning_) {
       bounceOffShape(stillShape_, this->id(), coefficient(), *ball, contact.feature, board);
     } else {
-      const std::optional<SwingTouch<Real>> touch = swingTouchNow(ball->trajectoryAt(board.now()), Ball<Real>::radius(),
-                                                                  armAt(contact.feature / 4, board.now()), contact.feature % 4);
+      const std::optional<SwingTouch<Real>> touch =
+          swingTouchNow(ball->trajectoryAt(board.now()), Ball<Real>::radius(), armAt(contact.feature / 4, board.now()),
+                        contact.feature % 4);
       if (!touch) return;
-      ball->reflect(touch->normal, coefficient(), touch->surfaceVelocity, SurfaceType::Round, this->id(), nullptr, board,
-                    touch->bend);
+      ball->reflect(touch->normal, coefficient(), touch->surfaceVelocity, SurfaceType::Round, this->id(), nullptr,
+                    board, touch->bend);
       if (countHit(ball->id(), board)) return;
     }
     board.performAction(this->id());  // NiklavsM's spinner acts on its own hits
@@ -219,7 +221,8 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
   // The cross at `phase` past quarter_ quarters: exact at whole quarters.
   Shape<Real> shapeAt(const Real& phase) const {
     Shape<Real> shape;
-    addSpinnerCross(shape, centre_, phase == Real(0) ? quarterDirection<Real>(quarter_) : arm(quarter_, phase).direction(Real(0)));
+    addSpinnerCross(shape, centre_,
+                    phase == Real(0) ? quarterDirection<Real>(quarter_) : arm(quarter_, phase).direction(Real(0)));
     return shape;
   }
 

@@ -16,7 +16,8 @@
 
 namespace gizmo {
 
-template <class Real> class AbstractGizmo;
+template <class Real>
+class AbstractGizmo;
 
 // Each kind's core description, specialised in its own file (kinds/STEM.hpp).
 template <GizmoType T>
@@ -49,7 +50,7 @@ concept CoreKindEntry = requires(Shape<double>& shape, const GizmoSpec& spec) {
   // Its handedness property ("left", "right"), empty for a kind without one.
   { K::handedness } -> std::convertible_to<std::string_view>;
   // The model rules (board/model_rule.hpp) that only this kind records.
-  { std::span<const ModelRule>(K::rules) };
+  {std::span<const ModelRule>(K::rules)};
   // Its outline at rest, in board coordinates (what restShape returns for it).
   K::template addRestShape<double>(shape, spec);
   // The gizmo the board builds for it.

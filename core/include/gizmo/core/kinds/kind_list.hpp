@@ -5,16 +5,16 @@
 // (docs/design.md, "Adding a gizmo"). The enumerators' values are in logs and tests, so a new
 // kind is a new line at the end. cmake/GizmoKinds.cmake reads this file at configure time to
 // include every kind's files; a line whose file is missing stops the configure step.
-#define GIZMO_KINDS(X)            \
-  X(Square, square)               \
-  X(Circle, circle)               \
-  X(Triangle, triangle)           \
-  X(LeftFlipper, left_flipper)    \
-  X(RightFlipper, right_flipper)  \
-  X(Absorber, absorber)           \
-  X(Booster, booster)             \
-  X(Teleporter, teleporter)       \
-  X(Sink, sink)                   \
-  X(Portal, portal)               \
-  X(Spinner, spinner)             \
+#define GIZMO_KINDS(X)           \
+  X(Square, square)              \
+  X(Circle, circle)              \
+  X(Triangle, triangle)          \
+  X(LeftFlipper, left_flipper)   \
+  X(RightFlipper, right_flipper) \
+  X(Absorber, absorber)          \
+  X(Booster, booster)            \
+  X(Teleporter, teleporter)      \
+  X(Sink, sink)                  \
+  X(Portal, portal)              \
+  X(Spinner, spinner)            \
   X(Spawner, spawner)

@@ -22,8 +22,8 @@ void addTurnedTriangle(Shape<Real>& s, const GizmoSpec& g, int extraQuarters) {
   const AtCell<Real> at{g};
   const Vec2<Real> c = at(0.5, 0.5);
   const int k = g.orientation / 90 + extraQuarters;
-  addPolygon(s, {rotateQuarterTurns(at(0, 0), c, k), rotateQuarterTurns(at(1, 0), c, k),
-                 rotateQuarterTurns(at(0, 1), c, k)});
+  addPolygon(
+      s, {rotateQuarterTurns(at(0, 0), c, k), rotateQuarterTurns(at(1, 0), c, k), rotateQuarterTurns(at(0, 1), c, k)});
 }
 
 // A flipper at its rest angle: the capsule from its pivot (flipperLayout).

@@ -87,9 +87,7 @@ decltype(auto) withRecordablePrecision(const PrecisionChoice& p, F&& f) {
     case Precision::LongDouble: return f.template operator()<long double>();
 #if GIZMO_HAS_MULTIPRECISION
     case Precision::Float128: return f.template operator()<Float128>();
-    case Precision::Mpfr:
-      setMpfrBits(p.mpfrBits);
-      return f.template operator()<MpfrReal>();
+    case Precision::Mpfr: setMpfrBits(p.mpfrBits); return f.template operator()<MpfrReal>();
 #endif
     default:
       if (recordable(p)) throwNotBuiltHere(p);

@@ -45,8 +45,8 @@ inline constexpr long kSmoothEvaluationCap = 200000;
 // Optional in/out statistics of firstEntrySmooth.
 struct SmoothSearchInfo {
   long maxEvaluations = kSmoothEvaluationCap;  // in: cap on value() + slope() calls
-  long evaluations = 0;                         // out: value() + slope() calls made
-  bool capped = false;  // out: the cap stopped the search; the result is an early guess
+  long evaluations = 0;                        // out: value() + slope() calls made
+  bool capped = false;                         // out: the cap stopped the search; the result is an early guess
 };
 
 namespace detail {
@@ -214,21 +214,18 @@ Real solveEntry(const Value& value, const Slope& slope, Real a, Real b, Real fb,
 
 // A root of p in [a, b], given p(a) and p(b) of opposite signs (neither zero).
 template <class Real>
-Real solveSignChange(const Quartic<Real>& p, const Real& a, const Real& pa, const Real& b,
-                     const Real& pb) {
+Real solveSignChange(const Quartic<Real>& p, const Real& a, const Real& pa, const Real& b, const Real& pb) {
   // Bisection in an exact scalar would never end with the root, only with ever longer
   // rationals near it.
   if constexpr (kExactScalar<Real>)
     throw IrrationalValue("a root of a polynomial of degree " + std::to_string(p.degree) +
                           " (the turning points of a ballistic gap)");
   if (pa > 0) {
-    return solveEntry(
-        [&p](const Real& t) -> Real { return p.value(t); },
-        [&p](const Real& t) -> Real { return p.slope(t); }, a, b, pb);
+    return solveEntry([&p](const Real& t) -> Real { return p.value(t); },
+                      [&p](const Real& t) -> Real { return p.slope(t); }, a, b, pb);
   }
-  return solveEntry(
-      [&p](const Real& t) -> Real { return Real(-p.value(t)); },
-      [&p](const Real& t) -> Real { return Real(-p.slope(t)); }, a, b, Real(-pb));
+  return solveEntry([&p](const Real& t) -> Real { return Real(-p.value(t)); },
+                    [&p](const Real& t) -> Real { return Real(-p.slope(t)); }, a, b, Real(-pb));
 }
 
 // Real roots of a2 t^2 + a1 t + a0 (a2 != 0), sorted, by the cancellation-free closed form
@@ -450,8 +447,7 @@ std::optional<Real> entryByCascade(const Quartic<Real>& g, const Real& lo, const
 // Before the cascade, cheap bounds (detail::noEntryByBounds) settle the gaps that provably have
 // no entry in (0, hi]; they give the answer the cascade would.
 template <class Real, class Accept>
-std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, const Real& hi,
-                               Accept&& accept) {
+std::optional<Real> firstEntry(const std::array<Real, 5>& c, const Real& lo, const Real& hi, Accept&& accept) {
   const detail::Quartic<Real> g(c);
   const Real gLo = g.value(lo);
   if (gLo <= 0 && g.slope(lo) < 0 && accept(lo)) return lo;

@@ -57,9 +57,13 @@ inline Real absOf(const Real& x) {
 template <class Real>
 using ChosenOf = std::conditional_t<std::is_floating_point_v<Real>, Real, const Real&>;
 template <class Real>
-inline ChosenOf<Real> minOf(const Real& a, const Real& b) { return b < a ? b : a; }
+inline ChosenOf<Real> minOf(const Real& a, const Real& b) {
+  return b < a ? b : a;
+}
 template <class Real>
-inline ChosenOf<Real> maxOf(const Real& a, const Real& b) { return a < b ? b : a; }
+inline ChosenOf<Real> maxOf(const Real& a, const Real& b) {
+  return a < b ? b : a;
+}
 
 // The unit roundoff of the type (for MPFR: of the current default precision): 2^(1 - digits), the
 // gap between 1 and the next value of a format with `digits` significand bits. That is what
@@ -87,15 +91,29 @@ inline Real piOf() {
 }
 
 template <class Real>
-inline double toDouble(const Real& x) { return static_cast<double>(x); }
+inline double toDouble(const Real& x) {
+  return static_cast<double>(x);
+}
 
 template <class Real>
-inline Real fromDouble(double d) { return Real(d); }  // exact: every ladder type holds a double
+inline Real fromDouble(double d) {
+  return Real(d);
+}  // exact: every ladder type holds a double
 
-template <class Real> std::string scalarName();
-template <> inline std::string scalarName<float>() { return "float"; }
-template <> inline std::string scalarName<double>() { return "double"; }
-template <> inline std::string scalarName<long double>() { return "long-double"; }
+template <class Real>
+std::string scalarName();
+template <>
+inline std::string scalarName<float>() {
+  return "float";
+}
+template <>
+inline std::string scalarName<double>() {
+  return "double";
+}
+template <>
+inline std::string scalarName<long double>() {
+  return "long-double";
+}
 
 // The binary format of a hardware floating-point type, as the replay log names it. The same
 // scalar name means different formats on different machines (long double is x87's 80-bit
@@ -125,20 +143,17 @@ inline std::string scalarFormat() {
 
 // MPFR at a precision chosen at run time. Expression templates are off: the simulator's generic
 // code then reads like plain arithmetic and cannot keep a dangling expression by accident.
-using MpfrReal = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>,
-                                               boost::multiprecision::et_off>;
+using MpfrReal =
+    boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<0>, boost::multiprecision::et_off>;
 using Float128 = boost::multiprecision::float128;
 // Boost's own binary floats of 50 and 100 decimal digits (168 and 334 bits), expression templates
 // off for the same reason.
-using Bin50 = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<50>,
-                                            boost::multiprecision::et_off>;
-using Bin100 = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<100>,
-                                             boost::multiprecision::et_off>;
+using Bin50 = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<50>, boost::multiprecision::et_off>;
+using Bin100 = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<100>, boost::multiprecision::et_off>;
 // Exact rationals (GMP's mpq). A run in rationals is exact for as long as every value it needs is
 // rational; the first one that is not (a square root that is not a perfect square, π) throws
 // IrrationalValue, so that an exact run never silently becomes an approximate one.
-using Rational = boost::multiprecision::number<boost::multiprecision::gmp_rational,
-                                               boost::multiprecision::et_off>;
+using Rational = boost::multiprecision::number<boost::multiprecision::gmp_rational, boost::multiprecision::et_off>;
 
 template <>
 inline constexpr bool kExactScalar<Rational> = true;
@@ -168,7 +183,9 @@ inline Rational sqrtOf<Rational>(const Rational& x) {
 }
 
 template <>
-inline Rational epsilonOf<Rational>() { return Rational(0); }
+inline Rational epsilonOf<Rational>() {
+  return Rational(0);
+}
 // Bits of a freshly made MpfrReal: the precision the current thread computes with.
 inline long mpfrBits() {
   MpfrReal probe;
@@ -186,11 +203,17 @@ inline MpfrReal epsilonOf<MpfrReal>() {
 }
 
 template <>
-inline Float128 piOf<Float128>() { return boost::math::constants::pi<Float128>(); }
+inline Float128 piOf<Float128>() {
+  return boost::math::constants::pi<Float128>();
+}
 template <>
-inline Bin50 piOf<Bin50>() { return boost::math::constants::pi<Bin50>(); }
+inline Bin50 piOf<Bin50>() {
+  return boost::math::constants::pi<Bin50>();
+}
 template <>
-inline Bin100 piOf<Bin100>() { return boost::math::constants::pi<Bin100>(); }
+inline Bin100 piOf<Bin100>() {
+  return boost::math::constants::pi<Bin100>();
+}
 template <>
 inline MpfrReal piOf<MpfrReal>() {
   MpfrReal p;
@@ -203,16 +226,31 @@ inline Rational piOf<Rational>() {
   throw IrrationalValue("π (the angle of a swinging flipper)");
 }
 
-template <> inline std::string scalarName<Float128>() { return "float128"; }
-template <> inline std::string scalarName<Bin50>() { return "bin50"; }
-template <> inline std::string scalarName<Bin100>() { return "bin100"; }
-template <> inline std::string scalarName<Rational>() { return "rational"; }
-template <> inline std::string scalarName<MpfrReal>() {
+template <>
+inline std::string scalarName<Float128>() {
+  return "float128";
+}
+template <>
+inline std::string scalarName<Bin50>() {
+  return "bin50";
+}
+template <>
+inline std::string scalarName<Bin100>() {
+  return "bin100";
+}
+template <>
+inline std::string scalarName<Rational>() {
+  return "rational";
+}
+template <>
+inline std::string scalarName<MpfrReal>() {
   return "mpfr:" + std::to_string(mpfrBits());
 }
 // Boost's float128 is __float128: IEEE binary128.
 template <>
-inline std::string scalarFormat<Float128>() { return "binary128"; }
+inline std::string scalarFormat<Float128>() {
+  return "binary128";
+}
 
 #endif  // GIZMO_HAS_MULTIPRECISION
 

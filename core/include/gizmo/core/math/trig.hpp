@@ -32,9 +32,8 @@ namespace detail {
 
 // pi/2 as a sum of doubles, each the rounding of what the previous ones leave; the sum is good to
 // about 2^-270, enough for lo to be accurate when Real is float128.
-inline constexpr double kHalfPiParts[5] = {0x1.921fb54442d18p+0, 0x1.1a62633145c07p-54,
-                                           -0x1.f1976b7ed8fbcp-110, 0x1.4cf98e804177dp-164,
-                                           0x1.31d89cd9128a5p-218};
+inline constexpr double kHalfPiParts[5] = {0x1.921fb54442d18p+0, 0x1.1a62633145c07p-54, -0x1.f1976b7ed8fbcp-110,
+                                           0x1.4cf98e804177dp-164, 0x1.31d89cd9128a5p-218};
 
 #if GIZMO_HAS_MULTIPRECISION
 // pi/2 as a sum of doubles from MPFR's correctly rounded pi, for scalars wider than the table

@@ -86,7 +86,8 @@ void continueRun(GameBoard<Real>& board, const RunRequest& request, std::int64_t
 inline RunRequest runThroughTickAt(const RunRequest& request, double t) {
   RunRequest cut = request;
   if (!(request.maxTick > 0) || !(t < request.duration)) return cut;
-  double k = t > 0 ? std::floor(t / request.maxTick) : 0;  // then the first k with k·maxTick ≥ t, as tickSpan computes it
+  double k =
+      t > 0 ? std::floor(t / request.maxTick) : 0;  // then the first k with k·maxTick ≥ t, as tickSpan computes it
   while (k * request.maxTick < t) k += 1;
   while (k > 1 && !((k - 1) * request.maxTick < t)) k -= 1;
   if (k < 1) k = 1;

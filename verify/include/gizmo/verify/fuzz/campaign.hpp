@@ -92,13 +92,13 @@ struct CaseOutcome {
   bool holds = true;
   std::uint64_t fingerprint = 0;
   // When it does not hold:
-  std::string message;     // for the minimal run
+  std::string message;  // for the minimal run
   RunRequest minimal;
   Precision scalar = Precision::Double;  // the minimal run's
-  std::string departure;   // a variation's: how the minimal run departs from the user's, in words
+  std::string departure;                 // a variation's: how the minimal run departs from the user's, in words
   std::size_t shrinkSteps = 0;
   std::optional<double> failedAt = std::nullopt;  // when the minimal run failed, where the property says
-  std::string folder;      // where its files are, relative to the campaign's folder (once written)
+  std::string folder;  // where its files are, relative to the campaign's folder (once written)
 };
 
 struct CampaignResult {
@@ -107,7 +107,7 @@ struct CampaignResult {
   std::string cases = "generated";            // CaseSource::describe()
   std::vector<std::uint64_t> shardsIncluded;  // which shards of `shards` this holds
   std::uint64_t shards = 1;
-  bool complete = true;  // false: stopped before every case of its shards ran
+  bool complete = true;               // false: stopped before every case of its shards ran
   std::vector<CaseOutcome> outcomes;  // by case, then property
 };
 

@@ -17,7 +17,7 @@ namespace gizmo::verify::fuzz {
 
 struct PropertyResult {
   bool holds = true;
-  std::string message;          // why not, when it does not hold
+  std::string message;            // why not, when it does not hold
   std::uint64_t fingerprint = 0;  // a digest of what the check saw: equal runs, equal fingerprints
   // The board time by which it was seen not to hold, where the property can say (the
   // invariants); a failure's log need not go further than the tick that holds it.

@@ -16,7 +16,8 @@ namespace gizmo::verify::fuzz {
 std::string exact(double x);
 
 // "collision t=… a=3 b=7 feature=1 #42"
-std::string describeEvent(EventKind kind, double time, GizmoId a, GizmoId b, std::int32_t feature, std::uint64_t sequence);
+std::string describeEvent(EventKind kind, double time, GizmoId a, GizmoId b, std::int32_t feature,
+                          std::uint64_t sequence);
 template <class Real>
 std::string describeEvent(const Event<Real>& e) {
   return describeEvent(e.kind, toDouble(e.time), e.a, e.b, e.feature, e.sequence);

@@ -18,12 +18,11 @@ std::vector<RunRequest> shrinkCandidates(const RunRequest& run);
 
 struct Minimised {
   RunRequest run;
-  std::size_t steps = 0;   // candidates accepted
-  std::size_t tries = 0;   // times `fails` was called
+  std::size_t steps = 0;  // candidates accepted
+  std::size_t tries = 0;  // times `fails` was called
 };
 // Greedy: takes the first candidate that still fails, and starts again from it, until none fails
 // or `fails` has been called `budget` times.
-Minimised minimise(const RunRequest& failing, const std::function<bool(const RunRequest&)>& fails,
-                   std::size_t budget);
+Minimised minimise(const RunRequest& failing, const std::function<bool(const RunRequest&)>& fails, std::size_t budget);
 
 }  // namespace gizmo::verify::fuzz

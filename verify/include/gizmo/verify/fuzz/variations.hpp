@@ -49,22 +49,22 @@ struct AddedPress {
 };
 
 struct BallDeparture {
-  std::size_t ball = 0;  // index in the board's balls
-  double dx = 0, dy = 0;  // moved, L
-  double speedFactor = 1;  // speed scaled
-  double turn = 0;         // tan(θ/2) of the turn of its direction (rational rotation, no libm)
+  std::size_t ball = 0;           // index in the board's balls
+  double dx = 0, dy = 0;          // moved, L
+  double speedFactor = 1;         // speed scaled
+  double turn = 0;                // tan(θ/2) of the turn of its direction (rational rotation, no libm)
   double kickVx = 0, kickVy = 0;  // added to a ball at rest
 };
 
 struct Departure {
   std::vector<AddedPress> added;
-  std::vector<std::size_t> removed;                    // indices of the base's key events taken out
-  std::vector<std::pair<std::size_t, double>> moved;   // a base key event and its new time
+  std::vector<std::size_t> removed;                   // indices of the base's key events taken out
+  std::vector<std::pair<std::size_t, double>> moved;  // a base key event and its new time
   std::vector<BallDeparture> balls;
   double gravityFactor = 1, muFactor = 1, mu2Factor = 1;
   bool otherModel = false;
-  double maxTickFactor = 1;  // 1, 1/2 or 2
-  bool otherScalar = false;  // long double for a double run, and the other way round
+  double maxTickFactor = 1;        // 1, 1/2 or 2
+  bool otherScalar = false;        // long double for a double run, and the other way round
   std::optional<double> duration;  // a shorter run (only shrinking sets it)
 
   bool empty() const;
