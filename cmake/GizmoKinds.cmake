@@ -43,9 +43,10 @@ endfunction()
 
 gizmo_kind_header(${PROJECT_SOURCE_DIR}/core/include/gizmo/core/kinds gizmo/core/kinds
   ${GIZMO_GENERATED_DIR}/core/gizmo/core/kinds/all_kinds.hpp "core file")
+# Every build draws: the portable wasm32 build's play module (web/) shares cli/'s drawing module.
+gizmo_kind_header(${PROJECT_SOURCE_DIR}/cli/kinds kinds
+  ${GIZMO_GENERATED_DIR}/cli/kinds/all_drawing_kinds.hpp "drawing file")
 if(NOT GIZMO_PORTABLE)
   gizmo_kind_header(${PROJECT_SOURCE_DIR}/verify/src/kinds kinds
     ${GIZMO_GENERATED_DIR}/verify/kinds/all_verify_kinds.hpp "verify file")
-  gizmo_kind_header(${PROJECT_SOURCE_DIR}/cli/kinds kinds
-    ${GIZMO_GENERATED_DIR}/cli/kinds/all_drawing_kinds.hpp "drawing file")
 endif()
