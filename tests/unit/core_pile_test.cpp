@@ -3,6 +3,7 @@
 // leaves rest wakes what rests on it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "support/board_builder.hpp"
@@ -234,6 +235,53 @@ TEST(Piles, ABallThatLeavesRestWakesWhatRestsOnIt) {
   EXPECT_FALSE(c.wedged());
   board->tick(1.0);
   EXPECT_GT(c.positionAt(board->now()).y, restC.y + 0.5);
+}
+
+// Rule 4 waits until the instant is over, and a ball back at rest where it rested by then never
+// moved. Ball M lies on the floor, C balanced on top of it, and X slides in along the floor into M
+// while the jam rule holds (forced here; in campaign seed 2612061238, case 1209, a pile of 51
+// balls made it). The jammed hit sends M and X on together at half X's speed. With a square's
+// side against M, M's hit on it leaves no rebound and X strikes M again at that instant, which
+// rests the pair: M never moved, and C stays at rest. In that case a ball woken so fell back onto
+// a spinner 0.78 ns later, whose start struck the first ball out of rest and into it again, for
+// ever. Without the square M is still moving when the instant's events are over, and C wakes.
+TEST(Piles, ABallStruckOutOfRestAndBackIntoItAtOneInstantWakesNothing) {
+  for (const bool squareBesideM : {true, false}) {
+    SCOPED_TRACE(squareBesideM ? "a square beside M" : "nothing beside M");
+    BoardSpec s = emptyBoard(25, 0, 0);
+    if (squareBesideM) s.gizmos.push_back(gizmoAt(GizmoType::Square, "Q", 9, 19));  // its side at x = 10
+    s.balls.push_back(ballAt("M", 10.25, 19.75));
+    s.balls.push_back(ballAt("C", 10.25, 19.25));
+    s.balls.push_back(ballAt("X", 15.0, 19.75, -1, 0));  // touches M at t = 4.25 s
+    auto board = build(s, MotionModel::Ballistic);
+    board->tick(4.25 - 5e-7);
+    const Ball<double>& m = board->ballById(*board->find("M"));
+    const Ball<double>& c = board->ballById(*board->find("C"));
+    ASSERT_TRUE(m.resting());
+    ASSERT_TRUE(c.wedged());
+    const Vec2<double> restM = m.positionAt(board->now()), restC = c.positionAt(board->now());
+    BoardState<double> jammed = board->saveState();
+    jammed.jamWindowStart = jammed.now;
+    jammed.collisionsInWindow = 1000;
+    board->restoreState(jammed);
+    Recorder<double> rec;
+    board->setObserver(&rec);
+    board->tick(0.5);
+    ASSERT_GE(rec.countRule(ModelRule::Jammed), 1);
+    const GizmoId cId = *board->find("C");
+    const auto wokeC = std::count_if(rec.rules.begin(), rec.rules.end(), [&](const auto& r) {
+      return r.first == ModelRule::ContactEnd && r.second == cId;
+    });
+    if (squareBesideM) {
+      EXPECT_EQ(wokeC, 0);
+      EXPECT_TRUE(m.resting());
+      EXPECT_EQ(m.positionAt(board->now()), restM);
+      EXPECT_TRUE(c.wedged());
+      EXPECT_EQ(c.positionAt(board->now()), restC);
+    } else {
+      EXPECT_EQ(wokeC, 1);  // M still moving when the instant's events were over (the jam then rests all three)
+    }
+  }
 }
 
 }  // namespace

@@ -71,14 +71,27 @@ void GameBoard<Real>::tickUntil(const Real& end) {
     advanceTo(e.time);
     execute(e);
     recomputePending();
-    if (!starting_.empty() && (e.kind == EventKind::EndOfTick || now_ < queue_.top().time)) {
+    if (!starting_.empty() && instantOver(e)) {
       releaseContactsOfStarted();
-      wakeWhatRestsOnStarted();
+      noteBallsThatLeftRest();  // those the releases woke
+      recomputePending();
+    }
+    // After the releases, whose balls may come back to rest at this instant too.
+    if (!leftRest_.empty() && instantOver(e)) {
+      wakeWhatRestsOnLeftRest();
       recomputePending();
     }
     if (e.kind == EventKind::EndOfTick) break;
   }
   if (observer_) observer_->tickBoundary(now_);
+}
+
+// Whether nothing more happens at the present instant after e. A tick's end closes the instant
+// regardless, so that nothing is pending where states are taken; what the releases there schedule
+// at that time begins the next tick.
+template <class Real>
+bool GameBoard<Real>::instantOver(const Event<Real>& e) {
+  return e.kind == EventKind::EndOfTick || now_ < queue_.top().time;
 }
 
 // The seed's step 3a (docs/physics.md, "The event loop"): every gizmo simulated up to the
@@ -184,34 +197,50 @@ void GameBoard<Real>::applyEvent(const Event<Real>& e) {
     case EventKind::Recalculate: recompute_.push_back(e.a); break;
     case EventKind::EndOfTick: break;
   }
-  wakeWhatRestsOnStarted();
+  noteBallsThatLeftRest();
 }
 
-// A ball that leaves rest wakes every ball at rest that it may hold up (docs/physics.md,
-// "Piles"): one within settleRise of it (the reach of a V of two balls), with the mover on
-// gravity's side of it. A woken ball leaves rest in turn, so a pile wakes from the bottom up. A
-// ball that only touches the mover from beside or below wakes too when gravity leans on the mover
-// at all: it costs a few events (it settles again), where missing one would leave it hanging in
-// the air.
+// The balls of recompute_ that left rest since the last look, with where they rested.
 template <class Real>
-void GameBoard<Real>::wakeWhatRestsOnStarted() {
+void GameBoard<Real>::noteBallsThatLeftRest() {
+  for (const GizmoId id : recompute_) {
+    if (!isBallId(id)) continue;
+    Ball<Real>& b = static_cast<Ball<Real>&>(*gizmos_[std::size_t(id)]);
+    if (b.takeStartedMoving()) leftRest_.push_back(LeftRest{id, b.positionAt(now_)});
+  }
+}
+
+// A ball that left rest wakes every ball at rest that it may hold up (docs/physics.md, "Piles"):
+// one within settleRise of it (the reach of a V of two balls), with the mover on gravity's side of
+// it. A woken ball leaves rest in turn, so a pile wakes from the bottom up. A ball that only
+// touches the mover from beside or below wakes too when gravity leans on the mover at all: it
+// costs a few events (it settles again), where missing one would leave it hanging in the air.
+// As a gizmo's release (releaseContactsOfStarted), this waits until nothing more happens at the
+// instant, the events of the balls those releases woke included, and a ball back at rest where it
+// rested then never moved and wakes nothing: a spinner's arm struck a
+// ball wedged against a flipper, which woke a ball wedged above it and came to rest again at
+// once; the woken ball fell back onto the spinner 0.78 ns later, whose hit started the spinner
+// and struck the first ball again, for ever (campaign seed 2612061238, case 1209).
+template <class Real>
+void GameBoard<Real>::wakeWhatRestsOnLeftRest() {
   const Real r = Ball<Real>::radius();
   const Real reach = Real(2) * r + params_.settleRise;
   const Vec2<Real> gravity(Real(0), params_.gravity);
-  for (std::size_t i = 0; i < recompute_.size(); ++i) {
-    if (!isBallId(recompute_[i])) continue;
-    Ball<Real>& mover = static_cast<Ball<Real>&>(*gizmos_[std::size_t(recompute_[i])]);
-    if (!mover.takeStartedMoving()) continue;
-    const Vec2<Real> below = mover.positionAt(now_);
+  for (std::size_t i = 0; i < leftRest_.size(); ++i) {
+    const LeftRest left = leftRest_[i];  // a copy: the loop appends what it wakes
+    const Ball<Real>& mover = *gizmos_[std::size_t(left.ball)]->asBall();
+    if (mover.resting() && !mover.captured() && mover.positionAt(now_) == left.from) continue;
     for (GizmoId id : balls_) {
       Ball<Real>& b = *gizmos_[static_cast<std::size_t>(id)]->asBall();
       if (!b.wedged() || b.captured()) continue;
-      const Vec2<Real> d = below - b.positionAt(now_);
+      const Vec2<Real> d = left.from - b.positionAt(now_);
       if (reach * reach < lengthSquared(d) || !(Real(0) < dot(d, gravity))) continue;
-      b.wake(*this, mover.id());
+      b.wake(*this, left.ball);
       recompute_.push_back(id);
+      if (b.takeStartedMoving()) leftRest_.push_back(LeftRest{id, b.positionAt(now_)});
     }
   }
+  leftRest_.clear();
 }
 
 template <class Real>

@@ -125,6 +125,8 @@ void GameBoard<Real>::restoreState(const BoardState<Real>& s) {
   for (GizmoId id : balls_)
     broadPhase_.placeBall(id, boxes_[std::size_t(id)], !gizmos_[std::size_t(id)]->asBall()->captured());
   recompute_.clear();
+  starting_.clear();  // both empty between instants, where states are taken
+  leftRest_.clear();
   stopped_ = false;
 }
 

@@ -128,8 +128,10 @@ class GameBoard final : private BoardAccess<Real> {
   void advanceTo(const Real& t);
   void execute(const Event<Real>& e);
   void applyEvent(const Event<Real>& e);
+  bool instantOver(const Event<Real>& e);
   void releaseContactsOfStarted();
-  void wakeWhatRestsOnStarted();
+  void noteBallsThatLeftRest();
+  void wakeWhatRestsOnLeftRest();
   void releaseContactsNow(GizmoId g);
   void fireTriggersOf(GizmoId source);
   void performAction(GizmoId target) override;
@@ -184,6 +186,13 @@ class GameBoard final : private BoardAccess<Real> {
   std::vector<GizmoId> recompute_;
   // Gizmos that started to move during the present instant; empty between instants.
   std::vector<GizmoId> starting_;
+  // Balls that left rest during the present instant, each with where it rested; empty between
+  // instants (wakeWhatRestsOnLeftRest).
+  struct LeftRest {
+    GizmoId ball;
+    Vec2<Real> from;
+  };
+  std::vector<LeftRest> leftRest_;
   std::vector<GizmoId> recomputing_;  // recomputePending's working list, kept for its capacity
   std::vector<GizmoId> candidates_;
   IdSet candidateSet_;  // gathers candidates_ in id order, without repeats

@@ -71,8 +71,8 @@ class Ball final : public AbstractGizmo<Real> {
     if (wasResting && !resting()) startedMoving_ = true;
   }
 
-  // Whether the ball left rest since the last call (what rests on it must wake: GameBoard's
-  // wakeWhatRestsOnStarted). Only within one event: not part of the state.
+  // Whether the ball left rest since the last call (what rests on it may have to wake: GameBoard's
+  // noteBallsThatLeftRest). Only within one event: not part of the state.
   bool takeStartedMoving() {
     const bool started = startedMoving_;
     startedMoving_ = false;
