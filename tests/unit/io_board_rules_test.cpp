@@ -21,7 +21,7 @@ namespace {
 using test::errorsOf;
 using test::formatted;
 
-ReadResult read(const std::string& s) { return readTextBoard(s, "b.txt"); }
+using test::read;
 ReadResult readXml(const std::string& s) { return readXmlBoard(s, "b.xml"); }
 
 // The one warning that contains `part`, or a test failure.

@@ -13,9 +13,13 @@
 #include "gizmo/core/board_spec.hpp"
 #include "gizmo/io/board_file.hpp"
 #include "gizmo/io/diagnostics.hpp"
+#include "gizmo/io/text_reader.hpp"
 #include "support/paths.hpp"
 
 namespace gizmo::io::test {
+
+// A board that a test writes, read as the file b.txt would be: messages name b.txt.
+inline ReadResult read(const std::string& text) { return readTextBoard(text, "b.txt"); }
 
 inline std::filesystem::path fixturesDir() { return std::filesystem::path(gizmo::test::fixturesDir()); }
 

@@ -15,7 +15,7 @@ namespace {
 
 using test::formatted;
 
-ReadResult read(const std::string& s) { return readTextBoard(s, "b.txt"); }
+using test::read;
 
 // Whether some warning of `r` starts with `prefix` ("b.txt:LINE:COLUMN: warning: …").
 ::testing::AssertionResult warned(const ReadResult& r, const std::string& prefix) {

@@ -17,7 +17,7 @@ namespace {
 using test::errorsOf;
 using test::formatted;
 
-ReadResult read(const std::string& s) { return readTextBoard(s, "b.txt"); }
+using test::read;
 std::vector<std::string> warnings(const std::string& s) { return formatted(read(s).warnings); }
 std::string firstError(const std::string& s) {
   const std::vector<std::string> e = errorsOf([&] { read(s); });
