@@ -8,6 +8,7 @@
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/verify/fuzz/invariants.hpp"
 #include "gizmo/verify/fuzz/properties.hpp"
+#include "gizmo/verify/fuzz/run_generator.hpp"
 #include "support/board_builder.hpp"
 
 namespace gizmo::verify::fuzz {
@@ -511,6 +512,15 @@ TEST(FuzzRegressions, ABallSentBackAlongAFlippersTopByTheWallAtItsEndLandsOnIt) 
   board.gizmos.push_back(gizmoAt(GizmoType::RightFlipper, "G19", 0, 16, 0, 2, 2));
   board.connections.push_back(ConnectSpec{"G3", "G19", {}});
   expectInvariantsInBothModels(ballisticRun(board, 0.05, 0.04808931757680732));
+}
+
+// Campaign seed 2612061514, case 1695 (generated run seed 0x3c4c00558b627f7c, size 79), unshrunk:
+// 51 balls without gravity; B49, struck to 5000 L/s, passes the pivot of the swinging flipper G9
+// at a tangent, 1.2e-10 L closer to it in the ballistic run, which glances off the pivot's cap
+// while the classic run passes it. The cap turns in place: a still circle, whose tangent hits
+// are rounding's choice, as at any still circle; the checker judged no hit on a swinging flipper.
+TEST(FuzzRegressions, ABallPassingASwingingFlippersPivotAtATangentStrikesItOnlyByRounding) {
+  expectModelsAgree(generateRun(0x3c4c00558b627f7cULL, 79));
 }
 
 }  // namespace

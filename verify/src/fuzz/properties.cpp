@@ -195,12 +195,16 @@ bool grazes(const GameBoard<double>& board, const Event<double>& e, const EventO
     // 667430151, case 4778: a ball lifted 1e-7 L/s off its line by rounding amplified in a row
     // of balls dips 7.5e-11 L into a flipper's tip in one run and 3.7e-11 L in the other, around
     // the graze's 5.8e-11 L; exactly, it is tangent). A swinging flipper's surface moves, and its
-    // hits are not judged here.
+    // hits are not judged here, but for its pivot's cap, which turns in place: a still circle (seed
+    // 2612061514, case 1695: a ball at 5000 L/s passing a swinging flipper's pivot at a tangent,
+    // 1.2e-10 L closer in the ballistic run, glanced off it there and not in the classic run).
     const auto* flipper = dynamic_cast<const Flipper<double>*>(&board.gizmo(g));
-    if (!flipper || flipper->swinging()) return false;
+    if (!flipper) return false;
     const SwingingAxis<double> axis = flipper->axisAt(e.time);
-    touch = touchOnCapsule(axis.pivot, Vec2<double>(axis.pivot + axis.length * axis.direction(0.0)), axis.radius,
-                           ball.position);
+    const Vec2<double> tip = axis.pivot + axis.length * axis.direction(0.0);
+    touch = touchOnCapsule(axis.pivot, tip, axis.radius, ball.position);
+    const bool onPivotCap = nearestPointOnSegment(ball.position, axis.pivot, tip) == axis.pivot;
+    if (flipper->swinging() && !onPivotCap) return false;
   } else if (spec.type == GizmoType::Spinner) {
     // A still spinner is two crossed capsules, judged like a still flipper on the nearer one; a
     // turning one is not judged.
