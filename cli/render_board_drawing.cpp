@@ -57,8 +57,11 @@ BoardDrawing drawingOf(const BoardSpec& board) {
 nlohmann::ordered_json drawingJson(const BoardDrawing& drawing) {
   nlohmann::ordered_json gizmos = nlohmann::ordered_json::array();
   for (const GizmoDrawing& d : drawing.gizmos) {
-    nlohmann::ordered_json g{{"name", d.name}, {"type", drawingTypeName(d.type)}};
     const Figure figure = figureOf(d.type);
+    nlohmann::ordered_json g{{"name", d.name},
+                             {"type", drawingTypeName(d.type)},
+                             {"figure", figureName(figure)},
+                             {"colour", colourOf(d.type)}};
     if (figure == Figure::Flipper) {
       g["pivot"] = point(d.pivot);
       g["rest_quarter"] = d.restQuarter;

@@ -46,6 +46,29 @@ Vec2<double> quarter(int q) {
   }
 }
 
+// One rule per class of the kinds' figures, in the kind list's order, each in its kind's colour.
+std::string kindStyles() {
+  std::string rules;
+  std::set<std::string_view> written;
+  for (const GizmoType kind : kDrawnKinds) {
+    const std::string_view svgClass = svgClassOf(kind);
+    if (!written.insert(svgClass).second) continue;
+    const std::string colour(colourOf(kind));
+    rules += "." + std::string(svgClass) + "{";
+    switch (figureOf(kind)) {
+      case Figure::Polygon:
+      case Figure::Disc: rules += "fill:" + colour; break;
+      case Figure::Flipper:
+      case Figure::Cross: rules += "stroke:" + colour + ";stroke-linecap:round"; break;
+      case Figure::CellOutline:
+        rules += "fill:none;stroke:" + colour + ";stroke-width:0.06;stroke-dasharray:0.15 0.1";
+        break;
+    }
+    rules += "}";
+  }
+  return rules;
+}
+
 std::string gizmoSvg(const GizmoDrawing& g) {
   const std::string title = "<title>" + escapeXml(g.name) + "</title>";
   switch (figureOf(g.type)) {  // each kind's drawing file says (cli/kinds/STEM.hpp)
@@ -118,13 +141,9 @@ std::string boardSvg(const BoardDrawing& board, const RunTrack* trace) {
   std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(side * kPixelsPerUnit) + "\" height=\"" +
                     num(side * kPixelsPerUnit) + "\" viewBox=\"" + num(-margin) + " " + num(-margin) + " " + num(side) +
                     " " + num(side) + "\">\n";
-  svg +=
-      "<style>.wall{fill:#10131a;stroke:#8a93a6;stroke-width:0.06}.square{fill:#d9534f}.triangle{fill:#3e7cd6}"
-      ".circle{fill:#3fae5a}.absorber{fill:#b05cc4}.booster{fill:#e0b830}.teleporter{fill:#2bb3c0}.portal{fill:#7b5cd6}"
-      ".sink{fill:#55556a}.flipper{stroke:#f0a030;stroke-linecap:round}.spinner{stroke:#b388ff;stroke-linecap:round}."
-      "spawner{fill:none;stroke:#7fa8c9;stroke-width:0.06;stroke-dasharray:0.15 0.1}"
-      ".ball{fill:#f4f4f4;stroke:#222;stroke-width:0.03}.trace{fill:none;stroke:#ffd54a;stroke-width:0.04;"
-      "stroke-linejoin:round;opacity:0.8}.hit{fill:#ff4040}</style>\n";
+  svg += "<style>.wall{fill:#10131a;stroke:#8a93a6;stroke-width:0.06}" + kindStyles() +
+         ".ball{fill:#f4f4f4;stroke:#222;stroke-width:0.03}.trace{fill:none;stroke:#ffd54a;stroke-width:0.04;"
+         "stroke-linejoin:round;opacity:0.8}.hit{fill:#ff4040}</style>\n";
   svg +=
       "<rect class=\"wall\" x=\"0\" y=\"0\" width=\"" + num(board.size) + "\" height=\"" + num(board.size) + "\"/>\n";
   for (const GizmoDrawing& g : board.gizmos) svg += gizmoSvg(g);

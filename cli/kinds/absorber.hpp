@@ -8,6 +8,7 @@ template <>
 struct KindDrawing<GizmoType::Absorber> {
   static constexpr Figure figure = Figure::Polygon;
   static constexpr std::string_view svgClass = "absorber";
+  static constexpr std::string_view colour = "#b05cc4";
 };
 
 }  // namespace gizmo::cli

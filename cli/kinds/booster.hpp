@@ -8,6 +8,7 @@ template <>
 struct KindDrawing<GizmoType::Booster> {
   static constexpr Figure figure = Figure::Polygon;
   static constexpr std::string_view svgClass = "booster";
+  static constexpr std::string_view colour = "#e0b830";
 };
 
 }  // namespace gizmo::cli

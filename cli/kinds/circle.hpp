@@ -8,6 +8,7 @@ template <>
 struct KindDrawing<GizmoType::Circle> {
   static constexpr Figure figure = Figure::Disc;
   static constexpr std::string_view svgClass = "circle";
+  static constexpr std::string_view colour = "#3fae5a";
 };
 
 }  // namespace gizmo::cli

@@ -1,13 +1,9 @@
 #pragma once
 // What every kind's drawing file (cli/kinds/STEM.hpp) defines: which figure the pictures draw for
 // it (render_board_drawing.cpp, render_board_svg.cpp, and render/board_view.js, which reads the
-// figure's fields from the drawing's JSON) and the SVG class of that figure. The generated header
-// kinds/all_drawing_kinds.hpp (cmake/GizmoKinds.cmake) includes every kind's file.
-//
-// The colours stay in one place each, keyed by the drawing's class (kinds/STEM.hpp in core: its
-// `drawing`): the SVG's style sheet (render_board_svg.cpp) and board_view.js's fills. Moving a
-// colour into a kind's file would reorder the style sheet, and so change every picture `gizmo
-// render` writes, which must stay the same bytes; the page's script reads the class it is given.
+// figure, its fields and its colour from the drawing's JSON), the SVG class of that figure, and
+// its colour (the SVG's style sheet is written from the kinds' colours, in the list's order). The
+// generated header kinds/all_drawing_kinds.hpp (cmake/GizmoKinds.cmake) includes every kind's file.
 #include <concepts>
 #include <string_view>
 
@@ -34,6 +30,9 @@ concept DrawingKindEntry = requires {
   // The class of its SVG element: the drawing's class of its core file, or one a figure shares
   // ("flipper" for both flippers).
   { K::svgClass } -> std::convertible_to<std::string_view>;
+  // "#rrggbb": the fill of a polygon or disc, the stroke of the other figures. Kinds that share a
+  // class share its figure and colour (drawing_registry.hpp checks).
+  { K::colour } -> std::convertible_to<std::string_view>;
 };
 
 }  // namespace gizmo::cli

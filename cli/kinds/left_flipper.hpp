@@ -9,6 +9,7 @@ struct KindDrawing<GizmoType::LeftFlipper> {
   static constexpr Figure figure = Figure::Flipper;
   // Both flippers share the class "flipper".
   static constexpr std::string_view svgClass = "flipper";
+  static constexpr std::string_view colour = "#f0a030";
 };
 
 }  // namespace gizmo::cli

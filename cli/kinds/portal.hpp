@@ -8,6 +8,7 @@ template <>
 struct KindDrawing<GizmoType::Portal> {
   static constexpr Figure figure = Figure::Disc;
   static constexpr std::string_view svgClass = "portal";
+  static constexpr std::string_view colour = "#7b5cd6";
 };
 
 }  // namespace gizmo::cli

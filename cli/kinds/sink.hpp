@@ -8,6 +8,7 @@ template <>
 struct KindDrawing<GizmoType::Sink> {
   static constexpr Figure figure = Figure::Polygon;
   static constexpr std::string_view svgClass = "sink";
+  static constexpr std::string_view colour = "#55556a";
 };
 
 }  // namespace gizmo::cli

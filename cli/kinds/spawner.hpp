@@ -8,6 +8,7 @@ template <>
 struct KindDrawing<GizmoType::Spawner> {
   static constexpr Figure figure = Figure::CellOutline;
   static constexpr std::string_view svgClass = "spawner";
+  static constexpr std::string_view colour = "#7fa8c9";
 };
 
 }  // namespace gizmo::cli

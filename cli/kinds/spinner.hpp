@@ -8,6 +8,7 @@ template <>
 struct KindDrawing<GizmoType::Spinner> {
   static constexpr Figure figure = Figure::Cross;
   static constexpr std::string_view svgClass = "spinner";
+  static constexpr std::string_view colour = "#b388ff";
 };
 
 }  // namespace gizmo::cli

@@ -8,6 +8,7 @@ template <>
 struct KindDrawing<GizmoType::Square> {
   static constexpr Figure figure = Figure::Polygon;
   static constexpr std::string_view svgClass = "square";
+  static constexpr std::string_view colour = "#d9534f";
 };
 
 }  // namespace gizmo::cli

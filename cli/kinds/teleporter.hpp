@@ -8,6 +8,7 @@ template <>
 struct KindDrawing<GizmoType::Teleporter> {
   static constexpr Figure figure = Figure::Disc;
   static constexpr std::string_view svgClass = "teleporter";
+  static constexpr std::string_view colour = "#2bb3c0";
 };
 
 }  // namespace gizmo::cli

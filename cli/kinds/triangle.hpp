@@ -8,6 +8,7 @@ template <>
 struct KindDrawing<GizmoType::Triangle> {
   static constexpr Figure figure = Figure::Polygon;
   static constexpr std::string_view svgClass = "triangle";
+  static constexpr std::string_view colour = "#3e7cd6";
 };
 
 }  // namespace gizmo::cli

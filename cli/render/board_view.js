@@ -8,8 +8,6 @@ const BoardView = (function () {
   const SWING_TIME = 1 / 12;  // docs/physics.md §2: a flipper swings a quarter turn in 1/12 s
   const QUARTER = Math.PI / 2;
   const BALL_COLOURS = ["#f4f4f4", "#ffe066", "#7fd1ff", "#ff9ecb", "#a5ffb0", "#ffb27a"];
-  const GIZMO_FILL = { square: "#d9534f", triangle: "#3e7cd6", circle: "#3fae5a", absorber: "#8e4aa3", booster: "#e0b830",
-                       teleporter: "#2bb3c0", portal: "#7b5cd6", sink: "#55556a" };
 
   // A canvas of width × height CSS pixels, sharp on a high-density screen; its context draws in
   // CSS pixels.
@@ -55,12 +53,13 @@ const BoardView = (function () {
     return g.rest_quarter * QUARTER + g.forward_sign * 6 * Math.PI * Math.min(SWING_TIME, Math.max(0, s));
   }
 
-  // One gizmo; a flipper at swing progress s, a spinner turned for s seconds (arm 0 from +x toward
-  // +y at its rate).
+  // One gizmo, by its figure and in its colour (each kind's drawing file says: cli/kinds/STEM.hpp);
+  // a flipper at swing progress s, a cross turned for s seconds (arm 0 from +x toward +y at its
+  // rate).
   function drawGizmo(ctx, g, s) {
-    if (g.type === "left-flipper" || g.type === "right-flipper") {
+    if (g.figure === "flipper") {
       const theta = flipperAngle(g, s);
-      ctx.strokeStyle = "#f0a030";
+      ctx.strokeStyle = g.colour;
       ctx.lineCap = "round";
       ctx.lineWidth = 2 * g.radius;
       ctx.beginPath();
@@ -73,8 +72,8 @@ const BoardView = (function () {
       ctx.fill();
       return;
     }
-    if (g.type === "spinner") {
-      ctx.strokeStyle = "#b388ff";
+    if (g.figure === "cross") {
+      ctx.strokeStyle = g.colour;
       ctx.lineCap = "round";
       ctx.lineWidth = 2 * g.radius;
       ctx.beginPath();
@@ -86,8 +85,8 @@ const BoardView = (function () {
       ctx.stroke();
       return;
     }
-    if (g.type === "spawner") {  // nothing meets it: an outline of its cell
-      ctx.strokeStyle = "#7fa8c9";
+    if (g.figure === "cell-outline") {  // nothing meets it: an outline of its cell
+      ctx.strokeStyle = g.colour;
       ctx.lineWidth = 0.06;
       ctx.setLineDash([0.15, 0.1]);
       ctx.beginPath();
@@ -97,7 +96,7 @@ const BoardView = (function () {
       ctx.setLineDash([]);
       return;
     }
-    ctx.fillStyle = GIZMO_FILL[g.type] || "#888";
+    ctx.fillStyle = g.colour;
     ctx.beginPath();
     if (g.centre) ctx.arc(g.centre[0], g.centre[1], g.radius, 0, 2 * Math.PI);
     else g.polygon.forEach((p, i) => (i ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
