@@ -50,12 +50,12 @@ Vec2<double> quarter(int q) {
 std::string kindStyles() {
   std::string rules;
   std::set<std::string_view> written;
-  for (const GizmoType kind : kDrawnKinds) {
-    const std::string_view svgClass = svgClassOf(kind);
-    if (!written.insert(svgClass).second) continue;
-    const std::string colour(colourOf(kind));
-    rules += "." + std::string(svgClass) + "{";
-    switch (figureOf(kind)) {
+  forEachKind([&]<GizmoType T>(KindTag<T>) {
+    using Drawing = KindDrawing<T>;
+    if (!written.insert(Drawing::svgClass).second) return;
+    const std::string colour(Drawing::colour);
+    rules += "." + std::string(Drawing::svgClass) + "{";
+    switch (Drawing::figure) {
       case Figure::Polygon:
       case Figure::Disc: rules += "fill:" + colour; break;
       case Figure::Flipper:
@@ -65,7 +65,7 @@ std::string kindStyles() {
         break;
     }
     rules += "}";
-  }
+  });
   return rules;
 }
 

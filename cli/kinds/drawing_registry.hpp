@@ -41,13 +41,6 @@ inline const char* figureName(Figure f) {
   return "polygon";  // not reached: every figure is a case
 }
 
-// Every kind, in the list's order (the style sheet's order).
-inline constexpr GizmoType kDrawnKinds[] = {
-#define GIZMO_DRAWN_KIND(Name, stem) GizmoType::Name,
-    GIZMO_KINDS(GIZMO_DRAWN_KIND)
-#undef GIZMO_DRAWN_KIND
-};
-
 // The style sheet has one rule per class, so kinds that share a class (both flippers) must agree
 // on its figure and colour.
 consteval bool sharedClassesAgree() {
