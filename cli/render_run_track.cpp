@@ -8,10 +8,10 @@
 
 #include <stdexcept>
 #include "gizmo/core/geometry/shapes.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
-#include "gizmo/core/gizmos/sink.hpp"
-#include "gizmo/core/gizmos/spawner.hpp"
+#include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
 
 namespace gizmo::cli {
@@ -78,18 +78,19 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
   // A spinner's turning as the player draws it: the seconds it has turned (its angle over its rate,
   // within a quarter turn, as the cross looks the same a quarter on), anchored at each action.
   std::map<GizmoId, std::vector<SwingAnchor>> spinners;
-  std::map<GizmoId, Vec2<double>> hold;  // where an absorber or a sink holds its balls
-  std::map<GizmoId, Vec2<double>> spawnAt;
+  std::map<GizmoId, Vec2<double>> hold;     // where a gizmo that captures balls holds them
+  std::map<GizmoId, Vec2<double>> spawnAt;  // where a gizmo that spawns balls puts them
   const std::vector<GizmoSpec>& specs = log.request.board.gizmos;
   for (std::size_t i = 0; i < specs.size(); ++i) {
     const GizmoId id = static_cast<GizmoId>(i + 1);  // 0 is the outer walls
     if (id >= static_cast<GizmoId>(log.gizmoNames.size()) || log.gizmoNames[std::size_t(id)] != specs[i].name)
       throw std::runtime_error("the log's gizmo names do not follow its board");
-    if (specs[i].type == GizmoType::LeftFlipper || specs[i].type == GizmoType::RightFlipper) flippers[id];
-    if (specs[i].type == GizmoType::Spinner) spinners[id] = {SwingAnchor{-1, 0, 0, 0}};
-    if (specs[i].type == GizmoType::Absorber) hold[id] = Absorber<double>(specs[i]).holdPosition();
-    if (specs[i].type == GizmoType::Sink) hold[id] = Sink<double>(specs[i]).centre();
-    if (specs[i].type == GizmoType::Spawner) spawnAt[id] = Spawner<double>(specs[i]).centre();
+    const KindMotion motion = gizmoKind(specs[i].type).motion;
+    if (motion == KindMotion::Swings) flippers[id];
+    if (motion == KindMotion::Turns) spinners[id] = {SwingAnchor{-1, 0, 0, 0}};
+    const AbstractGizmo<double>& gizmo = board->gizmo(id);
+    if (const std::optional<Vec2<double>> p = gizmo.heldBallPosition()) hold[id] = *p;
+    if (const std::optional<Vec2<double>> p = gizmo.spawnPosition()) spawnAt[id] = *p;
   }
   // A branch log's spinners as its first keyframe left them: the seconds turned past a quarter.
   if (branchStart)

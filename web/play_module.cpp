@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "chunk_outbox.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/core/run/run.hpp"
@@ -360,12 +361,15 @@ EMSCRIPTEN_KEEPALIVE const double* gp_swings() {
     const double now = game->board->now();
     for (std::size_t g = 0; g < game->board->gizmoCount(); ++g) {
       const auto& gizmo = game->board->gizmo(gizmo::GizmoId(g));
-      const bool flipper =
-          gizmo.kind() == gizmo::GizmoKind::LeftFlipper || gizmo.kind() == gizmo::GizmoKind::RightFlipper;
-      if (flipper) numbers.push_back(static_cast<const gizmo::Flipper<double>&>(gizmo).progressAt(now));
-      else if (gizmo.kind() == gizmo::GizmoKind::Spinner)
-        numbers.push_back(static_cast<const gizmo::Spinner<double>&>(gizmo).angleAt(now) / gizmo::kSpinnerTurnRate);
-      else numbers.push_back(0.0);
+      switch (gizmo::motionOf(gizmo.kind())) {
+        case gizmo::KindMotion::Swings:
+          numbers.push_back(static_cast<const gizmo::Flipper<double>&>(gizmo).progressAt(now));
+          break;
+        case gizmo::KindMotion::Turns:
+          numbers.push_back(static_cast<const gizmo::Spinner<double>&>(gizmo).angleAt(now) / gizmo::kSpinnerTurnRate);
+          break;
+        case gizmo::KindMotion::Still: numbers.push_back(0.0); break;
+      }
     }
   }
   return numbers.data();

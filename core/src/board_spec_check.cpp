@@ -54,6 +54,12 @@ bool earlier(const SourcePos& a, const SourcePos& b) {
 // " from line N" when the statement has a position, else nothing.
 std::string fromLine(const SourcePos& p) { return p.line > 0 ? " from line " + std::to_string(p.line) : std::string(); }
 
+// "an absorber", "a square": the kinds' words begin with a letter that is sounded.
+std::string withArticle(std::string_view word) {
+  const bool vowel = !word.empty() && std::string_view("aeiou").find(word.front()) != std::string_view::npos;
+  return (vowel ? "an " : "a ") + std::string(word);
+}
+
 std::string describe(const GizmoSpec& g) { return std::string(gizmoTypeWord(g.type)) + " " + quoted(g.name); }
 std::string describe(const BallSpec& b) { return "ball " + quoted(b.name); }
 std::string at(const BallSpec& b) { return " at (" + number(b.x) + ", " + number(b.y) + ")"; }
@@ -120,7 +126,8 @@ bool insideConvex(double px, double py, const std::vector<Vec2<double>>& poly) {
 // bound. restShape lists a polygon's edges as a closed chain and a capsule's two sides as
 // p+off→q+off, q−off→p−off; in both cases the chain of segment end points, without repeats, is
 // a convex region whose inside is part of the solid (the capsule's round ends are its circles).
-// A spinner's cross is two capsules, so two regions of two sides each; every other shape is one.
+// A turning kind's cross (a spinner's) is two capsules, so two regions of two sides each; every other
+// shape is one.
 struct PreparedShape {
   Shape<double> shape;
   std::vector<std::vector<Vec2<double>>> hulls;
@@ -130,7 +137,7 @@ PreparedShape prepare(const GizmoSpec& g) {
   PreparedShape p;
   p.shape = restShape<double>(g);
   const std::size_t n = p.shape.segments.size();
-  const std::size_t perPart = g.type == GizmoType::Spinner ? 2 : std::max<std::size_t>(n, 1);
+  const std::size_t perPart = turns(g.type) ? 2 : std::max<std::size_t>(n, 1);
   for (std::size_t first = 0; first < n; first += perPart) {
     std::vector<Vec2<double>> hull;
     for (std::size_t i = first; i < std::min(n, first + perPart); ++i) {
@@ -235,12 +242,12 @@ void checkGeometry(const BoardSpec& board, Collector& out) {
       out.add(g.where,
               describe(g) + " has orientation " + std::to_string(g.orientation) + "; it must be 0, 90, 180 or 270");
       placeable = false;
-    } else if (g.type == GizmoType::Absorber && g.orientation != 0) {
-      out.add(g.where, describe(g) + " has orientation " + std::to_string(g.orientation) +
-                           ", but an absorber cannot be rotated");
+    } else if (sizedByLine(g.type) && g.orientation != 0) {
+      out.add(g.where, describe(g) + " has orientation " + std::to_string(g.orientation) + ", but " +
+                           withArticle(gizmoTypeWord(g.type)) + " cannot be rotated");
     }
-    const int ownW = ownSide(g.type), ownH = ownW;  // an absorber: any size of at least 1×1
-    if (g.type == GizmoType::Absorber) {
+    const int ownW = ownSide(g.type), ownH = ownW;  // a kind sized by its line: any size of at least 1×1
+    if (sizedByLine(g.type)) {
       if (g.width < 1 || g.height < 1) {
         out.add(g.where, describe(g) + " is " + std::to_string(g.width) + " x " + std::to_string(g.height) +
                              " L; its width and height must each be at least 1");
@@ -254,7 +261,7 @@ void checkGeometry(const BoardSpec& board, Collector& out) {
     }
     if (!placeable) continue;
 
-    if (g.type == GizmoType::Portal && (g.exitX < 0 || g.exitY < 0 || g.exitX >= N || g.exitY >= N)) {
+    if (gizmoKind(g.type).exitCell && (g.exitX < 0 || g.exitY < 0 || g.exitX >= N || g.exitY >= N)) {
       out.add(g.where, describe(g) + " has its exit at cell " + std::to_string(g.exitX) + "," +
                            std::to_string(g.exitY) + ", which is not on the board (cells 0..19 in both)");
     }
@@ -330,7 +337,7 @@ void checkGeometry(const BoardSpec& board, Collector& out) {
     const bool atRest = b.vx == 0 && b.vy == 0;
     for (const std::size_t gi : candidates) {
       const GizmoSpec& g = board.gizmos[gi];
-      if (g.type == GizmoType::Absorber) {
+      if (gizmoKind(g.type).holdsPlacedBalls) {
         const double ax0 = g.x + kBallRadius, ax1 = static_cast<double>(g.x) + g.width - kBallRadius;
         const double ay0 = g.y + kBallRadius, ay1 = static_cast<double>(g.y) + g.height - kBallRadius;
         if (b.x >= ax0 && b.x <= ax1 && b.y >= ay0 && b.y <= ay1) {
@@ -338,7 +345,8 @@ void checkGeometry(const BoardSpec& board, Collector& out) {
             captured[bi] = 1;
           } else {
             out.add(b.where, describe(b) + at(b) + " is inside " + describe(g) +
-                                 " but moving; a ball may start inside an absorber only at rest (it is then captured)");
+                                 " but moving; a ball may start inside " + withArticle(gizmoTypeWord(g.type)) +
+                                 " only at rest (it is then captured)");
           }
           continue;
         }

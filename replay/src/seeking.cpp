@@ -1,6 +1,7 @@
 // The state of a log's run at an event or a time, from the nearest keyframe (replay.hpp: seekLog).
 #include <type_traits>
 
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "run_start.hpp"
 
 namespace gizmo::replay {
@@ -67,13 +68,13 @@ StartView startView(const OpenedLog& log) {
     }
     for (std::size_t g = 0; g < board->gizmoCount(); ++g) {
       const AbstractGizmo<Real>& gizmo = board->gizmo(GizmoId(g));
-      const GizmoKind kind = gizmo.kind();
-      if (kind != GizmoKind::LeftFlipper && kind != GizmoKind::RightFlipper && kind != GizmoKind::Spinner) continue;
+      const KindMotion motion = motionOf(gizmo.kind());
+      if (motion == KindMotion::Still) continue;
       // A flipper: t0, s0; direction, lastDirection, … A spinner: t0, phase; quarter, turning, …
       // (Flipper and Spinner saveState; docs/replay-format.md, "A gizmo's numbers").
       GizmoState<Real> st;
       gizmo.saveState(st);
-      if (kind == GizmoKind::Spinner)
+      if (motion == KindMotion::Turns)
         v.spinners.push_back(
             StartView::Turn{GizmoId(g), toDouble(st.reals.at(0)), toDouble(st.reals.at(1)), st.ints.at(1) != 0});
       else

@@ -9,6 +9,9 @@
 
 #include "gizmo/core/board/build_board.hpp"
 #include "gizmo/core/gizmo_kinds.hpp"
+#include "gizmo/core/gizmos/absorber.hpp"
+#include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/io/board_file.hpp"
 #include "gizmo/io/board_writer.hpp"
@@ -102,6 +105,29 @@ TEST_P(EveryKind, BuildsAndRuns) {
   for (GizmoId id = 0; id < GizmoId(board->gizmoCount()); ++id)
     found = found || board->gizmo(id).kind() == gizmoKindOf(GetParam().type);
   EXPECT_TRUE(found);
+}
+
+// Its entries that say what its gizmo does are what the shared code relies on (kinds/kind_core.hpp):
+// a kind that swings builds a Flipper, one that turns a Spinner, a still one neither, and a gizmo
+// of it reports its kind's motion; one that holds the balls placed inside it builds an Absorber,
+// which holds them at the start.
+TEST_P(EveryKind, ItsEntriesAreWhatItsGizmoIs) {
+  const auto board = buildBoard<double>(example(), PhysicsParams<double>{});
+  const KindMotion motion = gizmoKind(GetParam().type).motion;
+  const bool holds = gizmoKind(GetParam().type).holdsPlacedBalls;
+  int seen = 0;
+  for (GizmoId id = 0; id < GizmoId(board->gizmoCount()); ++id) {
+    const AbstractGizmo<double>& g = board->gizmo(id);
+    if (g.kind() != gizmoKindOf(GetParam().type)) continue;
+    ++seen;
+    EXPECT_EQ(motionOf(g.kind()), motion);
+    EXPECT_EQ(dynamic_cast<const Flipper<double>*>(&g) != nullptr, motion == KindMotion::Swings) << g.name();
+    EXPECT_EQ(dynamic_cast<const Spinner<double>*>(&g) != nullptr, motion == KindMotion::Turns) << g.name();
+    EXPECT_EQ(dynamic_cast<const Absorber<double>*>(&g) != nullptr, holds) << g.name();
+  }
+  EXPECT_GT(seen, 0);
+  EXPECT_EQ(motionOf(GizmoKind::Ball), KindMotion::Still);
+  EXPECT_EQ(motionOf(GizmoKind::OuterWalls), KindMotion::Still);
 }
 
 TEST_P(EveryKind, TheGeneratorMakesIt) {

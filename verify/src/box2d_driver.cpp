@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/spinner.hpp"
@@ -26,8 +27,8 @@ class Driver {
     bodies_.push_back(idOf(kOuterWallsName));
     for (const GizmoSpec& g : request.board.gizmos) {
       bodies_.push_back(idOf(g.name));
-      if (isFlipper(g.type)) flippers_.push_back(bodies_.size() - 1);
-      if (g.type == GizmoType::Spinner) spinners_.push_back(bodies_.size() - 1);
+      if (swings(g.type)) flippers_.push_back(bodies_.size() - 1);
+      if (turns(g.type)) spinners_.push_back(bodies_.size() - 1);
     }
     for (const BallSpec& b : request.board.balls) {
       balls_.push_back(idOf(b.name));

@@ -4,6 +4,7 @@
 
 #include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "gizmo/core/gizmos/grid_properties.hpp"
 #include "gizmo/core/gizmos/spinner.hpp"
 #include "kinds/verify_registry.hpp"
@@ -85,7 +86,7 @@ Box2dBody box2dBodyOf(const GizmoSpec& gizmo) {
   Box2dBody body;
   body.name = gizmo.name;
   body.type = gizmo.type;
-  if (isFlipper(gizmo.type)) {
+  if (swings(gizmo.type)) {
     const FlipperLayout f = flipperLayout(gizmo.type, gizmo.orientation);
     body.kinematic = true;
     body.restitution = 0.95;  // Flipper<Real>::coefficient()
@@ -94,7 +95,7 @@ Box2dBody box2dBodyOf(const GizmoSpec& gizmo) {
     body.parts = flipperParts();
     return body;
   }
-  if (gizmo.type == GizmoType::Spinner) {
+  if (turns(gizmo.type)) {
     // Still at load, its arms along the axes; the bridge turns it on the core's schedule.
     body.kinematic = true;
     body.restitution = Spinner<double>::coefficient();

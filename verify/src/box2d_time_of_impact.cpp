@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <random>
 
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/outer_walls.hpp"
 #include "gizmo/core/gizmos/polygonal_gizmo.hpp"
@@ -54,7 +55,7 @@ GizmoSpec gizmoAt(GizmoType type, int orientation) {
   g.x = 8;
   g.y = 8;
   g.orientation = orientation;
-  g.width = g.height = isFlipper(type) ? 2 : 1;
+  g.width = g.height = ownSide(type);
   return g;
 }
 
@@ -80,7 +81,7 @@ void aim(StraightSweep& s, const Vec2<double>& c, const Vec2<double>& nrm, Vec2<
   s.duration = (travel / speed) / (0.1 + 0.8 * stretch);
 }
 
-bool swings(const StraightSweep& s) {
+bool flipperSwings(const StraightSweep& s) {
   return s.kind == SweepKind::FlipperSwinging || s.kind == SweepKind::FlipperQuarterTurn;
 }
 
@@ -88,7 +89,7 @@ bool swings(const StraightSweep& s) {
 // before time 0, so that at time 0 it is that far into its forward swing.
 std::unique_ptr<Flipper<double>> flipperOf(const StraightSweep& s) {
   auto flipper = std::make_unique<Flipper<double>>(s.gizmo);
-  if (swings(s)) {
+  if (flipperSwings(s)) {
     PhysicsParams<double> params;
     DrivenBoardAccess access(
         params, [](GizmoId) -> Ball<double>& { throw std::logic_error("a flipper's trigger needs no ball"); });
@@ -248,7 +249,7 @@ OurHit ourTime(const StraightSweep& s) {
     const auto c = walls.timeUntilCollision(ball, 0, s.duration, params);
     return OurHit{c ? std::optional<double>(c->time) : std::nullopt, "edge"};
   }
-  if (isFlipper(s.gizmo.type)) {
+  if (swings(s.gizmo.type)) {
     const auto c = flipperOf(s)->timeUntilCollision(ball, 0, s.duration, params);
     if (!c) return OurHit{};
     return OurHit{c->time, c->feature < 2 ? "flipper-side" : "flipper-end"};
@@ -263,7 +264,7 @@ OurHit ourTime(const StraightSweep& s) {
 double ourGapAt(const StraightSweep& s, double t) {
   const Vec2<double> p = s.p + t * s.v;
   if (s.kind == SweepKind::Ball) return length(p - (s.otherP + t * s.otherV)) - 2 * kR;
-  if (swings(s)) {
+  if (flipperSwings(s)) {
     const SwingingAxis<double> axis = flipperOf(s)->axisAt(0);
     return distanceToSegment(p, axis.pivot, axis.pivot + axis.length * axis.direction(t)) - axis.radius - kR;
   }
@@ -318,7 +319,7 @@ Box2dHit box2dTime(const StraightSweep& s) {
   }
   const Box2dBody body = s.walls ? box2dOuterWalls() : box2dBodyOf(s.gizmo);
   double a0 = body.angle, turn = 0;
-  if (swings(s)) {
+  if (flipperSwings(s)) {
     // The angle on the forward swing, swingStart into it, and the turn over the sweep.
     const double omega = flipperLayout(s.gizmo.type, s.gizmo.orientation).forwardSign * 6 * piOf<double>();
     a0 += omega * s.swingStart;
@@ -339,7 +340,7 @@ std::optional<double> box2dStop(const StraightSweep& s, double shift) {
     const Trajectory<double> other{s.otherP, s.otherV, Vec2<double>()};
     return ballTimeOfImpact(path, other, (box2dToiTarget(2 * kR) + shift) / 2, s.duration);
   }
-  if (swings(s)) {
+  if (flipperSwings(s)) {
     // The three turning parts stop the ball exactly where a capsule of the flipper's radius
     // stops a ball of radius target − radius (box2d_mapping.cpp: their union is the capsule).
     const SwingingAxis<double> axis = flipperOf(s)->axisAt(0);
@@ -352,7 +353,7 @@ std::optional<double> box2dStop(const StraightSweep& s, double shift) {
   }
   const Box2dBody body = s.walls ? box2dOuterWalls() : box2dBodyOf(s.gizmo);
   const int quarter =
-      isFlipper(s.gizmo.type) && !s.walls ? flipperLayout(s.gizmo.type, s.gizmo.orientation).restQuarter : 0;
+      swings(s.gizmo.type) && !s.walls ? flipperLayout(s.gizmo.type, s.gizmo.orientation).restQuarter : 0;
   std::optional<FeatureHit<double>> best;
   for (const Box2dPart& part : body.parts) {
     const Box2dPart placed = placePart(part, body.origin, quarter);
@@ -425,7 +426,7 @@ std::string describeSweep(const StraightSweep& s) {
     std::snprintf(buf, sizeof buf, ", other p (%a, %a) v (%a, %a)", s.otherP.x, s.otherP.y, s.otherV.x, s.otherV.y);
     out += buf;
   }
-  if (swings(s)) {
+  if (flipperSwings(s)) {
     std::snprintf(buf, sizeof buf, ", swing start %a", s.swingStart);
     out += buf;
   }

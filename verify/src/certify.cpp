@@ -71,14 +71,14 @@ BoardLayout layoutOf(GameBoard<double>& board) {
       L.restQuarter = f.restQuarter;
       L.endQuarter = f.endQuarter;
       L.forwardSign = f.forwardSign;
-    } else if (g.kind() == GizmoKind::Spinner) {
+    } else if (dynamic_cast<const Spinner<double>*>(&g)) {
       L.kind = LayoutKind::Spinner;
       const GizmoSpec s = g.spec();
       L.pivot = Vec2<double>(double(s.x + 1), double(s.y + 1));
     } else if (const auto* shaped = dynamic_cast<const AbstractGizmoWithPolygonalGeometry<double>*>(&g)) {
       L.shape = shaped->shape();
       L.kind = LayoutKind::FixedShape;
-      if (g.kind() == GizmoKind::Absorber) {
+      if (dynamic_cast<const Absorber<double>*>(&g)) {
         L.kind = LayoutKind::Absorber;
         const GizmoSpec s = g.spec();
         L.rect = {double(s.x), double(s.y), double(s.width), double(s.height)};

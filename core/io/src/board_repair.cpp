@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gizmo/core/board_spec_check.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 
 namespace gizmo::io::detail {
 namespace {
@@ -26,12 +27,13 @@ bool gizmoOnBoard(const GizmoSpec& g) {
   return g.x >= 0 && g.y >= 0 && g.x + g.width <= kBoardSize && g.y + g.height <= kBoardSize;
 }
 
-// A ball whose centre lies in an absorber's rectangle (edges included) and that is not already a
-// valid captured ball: caught by that absorber, as the programs that allow it do at once.
+// A ball whose centre lies in the rectangle of an absorber (a kind that holds the balls placed in it,
+// kinds/STEM.hpp: holdsPlacedBalls), edges included, and that is not already a valid captured ball:
+// caught by it, as the programs that allow it do at once.
 void captureBallsInAbsorbers(BoardSpec& board, Reporter& rep) {
   std::vector<const GizmoSpec*> absorbers;
   for (const GizmoSpec& g : board.gizmos)
-    if (g.type == GizmoType::Absorber && gizmoOnBoard(g)) absorbers.push_back(&g);
+    if (gizmoKind(g.type).holdsPlacedBalls && gizmoOnBoard(g)) absorbers.push_back(&g);
   if (absorbers.empty()) return;
   for (BallSpec& b : board.balls) {
     if (!finiteBall(b)) continue;
@@ -46,7 +48,7 @@ void captureBallsInAbsorbers(BoardSpec& board, Reporter& rep) {
       const double y = std::clamp(b.y, y0 + kBallRadius, y1 - kBallRadius);
       rep.lenient("ball-in-absorber", b.where,
                   "ball " + quote(b.name) + " at (" + num(b.x) + ", " + num(b.y) + ") with velocity (" + num(b.vx) +
-                      ", " + num(b.vy) + ") lies in absorber " + quote(g.name) +
+                      ", " + num(b.vy) + ") lies in " + gizmoTypeWord(g.type) + " " + quote(g.name) +
                       "; it is read as captured there, at rest at (" + num(x) + ", " + num(y) + ")");
       b.x = x;
       b.y = y;
@@ -105,10 +107,11 @@ void convertPixelFile(BoardSpec& board, Reporter& rep) {
         break;
       }
       const long long x = g.x / s, y = g.y / s;
-      const long long w = g.type == GizmoType::Absorber ? cells(g.width, s) : g.width;
-      const long long h = g.type == GizmoType::Absorber ? cells(g.height, s) : g.height;
+      const bool sized = sizedByLine(g.type);
+      const long long w = sized ? cells(g.width, s) : g.width;
+      const long long h = sized ? cells(g.height, s) : g.height;
       fits = x + w <= kBoardSize && y + h <= kBoardSize &&
-             (g.type != GizmoType::Portal || (g.exitX % s == 0 && g.exitY % s == 0));
+             (!gizmoKind(g.type).exitCell || (g.exitX % s == 0 && g.exitY % s == 0));
       if (!fits) break;
     }
     for (const BallSpec& b : board.balls)
@@ -124,11 +127,11 @@ void convertPixelFile(BoardSpec& board, Reporter& rep) {
   for (GizmoSpec& g : board.gizmos) {
     g.x = static_cast<int>(g.x / chosen);
     g.y = static_cast<int>(g.y / chosen);
-    if (g.type == GizmoType::Absorber) {
+    if (sizedByLine(g.type)) {
       g.width = static_cast<int>(cells(g.width, chosen));
       g.height = static_cast<int>(cells(g.height, chosen));
     }
-    if (g.type == GizmoType::Portal) {
+    if (gizmoKind(g.type).exitCell) {
       g.exitX = static_cast<int>(g.exitX / chosen);
       g.exitY = static_cast<int>(g.exitY / chosen);
     }
@@ -231,12 +234,13 @@ void leaveOutWhatIsOffTheBoard(BoardSpec& board, Reporter& rep) {
   }
   for (std::size_t i = 0; i < board.gizmos.size(); ++i) {
     const GizmoSpec& g = board.gizmos[i];
-    if (g.type == GizmoType::Portal && (g.exitX < 0 || g.exitY < 0 || g.exitX >= kBoardSize || g.exitY >= kBoardSize)) {
+    if (gizmoKind(g.type).exitCell && (g.exitX < 0 || g.exitY < 0 || g.exitX >= kBoardSize || g.exitY >= kBoardSize)) {
+      const std::string word = gizmoTypeWord(g.type);
       dropGizmos.insert(i);
       rep.lenient("off-board-exit", g.where,
-                  "portal " + quote(g.name) + " has its exit at cell " + std::to_string(g.exitX) + "," +
-                      std::to_string(g.exitY) +
-                      ", which is not on the board (cells 0..19 in both); the portal is left out");
+                  word + " " + quote(g.name) + " has its exit at cell " + std::to_string(g.exitX) + "," +
+                      std::to_string(g.exitY) + ", which is not on the board (cells 0..19 in both); the " + word +
+                      " is left out");
       continue;
     }
     if (gizmoOnBoard(g) || g.width <= 0 || g.height <= 0) continue;

@@ -44,9 +44,8 @@ std::string writeXmlBoard(const BoardSpec& board) {
   for (const GizmoSpec& g : board.gizmos) {
     out += std::string("    <") + gizmoKind(g.type).xmlElement.data() + attr("name", xmlEscaped(g.name)) +
            attr("x", std::to_string(g.x)) + attr("y", std::to_string(g.y));
-    if (g.type == GizmoType::Absorber)
-      out += attr("width", std::to_string(g.width)) + attr("height", std::to_string(g.height));
-    if (g.type == GizmoType::Portal)
+    if (sizedByLine(g.type)) out += attr("width", std::to_string(g.width)) + attr("height", std::to_string(g.height));
+    if (gizmoKind(g.type).exitCell)
       out += attr("exitX", std::to_string(g.exitX)) + attr("exitY", std::to_string(g.exitY));
     // Whether a 0 orientation is written too is each kind's (kinds/STEM.hpp, xmlOrientationAlways).
     if (g.orientation != 0 || gizmoKind(g.type).xmlOrientationAlways)
@@ -73,10 +72,10 @@ std::string writeTextBoard(const BoardSpec& board) {
   for (const GizmoSpec& g : board.gizmos) {
     out += std::string(gizmoKind(g.type).textCommand) + " " + g.name + " " + std::to_string(g.x) + " " +
            std::to_string(g.y);
-    if (g.type == GizmoType::Absorber)
+    if (sizedByLine(g.type))
       out += " " + std::to_string(static_cast<long long>(g.x) + g.width) + " " +
              std::to_string(static_cast<long long>(g.y) + g.height);
-    if (g.type == GizmoType::Portal) out += " " + std::to_string(g.exitX) + " " + std::to_string(g.exitY);
+    if (gizmoKind(g.type).exitCell) out += " " + std::to_string(g.exitX) + " " + std::to_string(g.exitY);
     out += "\n";
     const int turns = (((g.orientation / 90) % 4) + 4) % 4;
     for (int i = 0; i < turns; ++i) out += "Rotate " + g.name + "\n";

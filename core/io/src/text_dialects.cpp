@@ -22,7 +22,7 @@ bool looksLikeWord(std::string_view s) {
   return !s.empty() && ((s[0] >= 'a' && s[0] <= 'z') || (s[0] >= 'A' && s[0] <= 'Z'));
 }
 
-bool creates(CommandRole r) { return r == CommandRole::Gizmo || r == CommandRole::Absorber || r == CommandRole::Ball; }
+bool creates(CommandRole r) { return r == CommandRole::Gizmo || r == CommandRole::Ball; }
 
 std::size_t carriageReturns(std::string_view text) {
   std::size_t n = 0;
@@ -120,7 +120,8 @@ const Dialect kDialects[] = {
      "left out (there is no size to read), with the commands that name it", DialectStage::Values,
      [](const DialectInput& in) -> Reading {
        const std::vector<Token>& t = *in.tokens;
-       if (in.command->role != CommandRole::Absorber || t.size() != 4) return std::nullopt;
+       if (in.command->role != CommandRole::Gizmo || in.command->type != GizmoType::Absorber || t.size() != 4)
+         return std::nullopt;
        return DialectReading{DialectOutcome::LeaveOutName,
                              "absorber-corner",
                              t[0].column,

@@ -55,7 +55,7 @@ enum class DialectOutcome {
   MakeAtEnd,                    // the connection is made at the end of the file, when what it names exists
 };
 
-enum class CommandRole { Gizmo, Absorber, Ball, Connect, Other };
+enum class CommandRole { Gizmo, Ball, Connect, Other };
 
 // A command of the format, as the reader's command table describes it.
 struct CommandView {

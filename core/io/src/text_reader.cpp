@@ -23,7 +23,7 @@ namespace {
 
 using namespace detail;
 
-enum class Cmd { Gizmo, Absorber, Ball, Rotate, Delete, Move, Connect, KeyConnect, Gravity, Friction };
+enum class Cmd { Gizmo, Ball, Rotate, Delete, Move, Connect, KeyConnect, Gravity, Friction };
 
 struct CommandInfo {
   std::string_view canonical;
@@ -48,9 +48,7 @@ constexpr CommandInfo kOtherCommands[] = {
 constexpr auto kCommands = [] {
   std::array<CommandInfo, std::size(kGizmoKinds) + std::size(kOtherCommands)> all{};
   std::size_t n = 0;
-  for (const GizmoKindInfo& k : kGizmoKinds)
-    all[n++] = {k.textCommand, k.type == GizmoType::Absorber ? Cmd::Absorber : Cmd::Gizmo, k.type, textTokens(k),
-                k.textUsage};
+  for (const GizmoKindInfo& k : kGizmoKinds) all[n++] = {k.textCommand, Cmd::Gizmo, k.type, textTokens(k), k.textUsage};
   for (const CommandInfo& c : kOtherCommands) all[n++] = c;
   return all;
 }();
@@ -132,8 +130,7 @@ class TextReader {
       if (!readOn(*r, t)) return;
     }
     switch (cmd->cmd) {
-      case Cmd::Gizmo:
-      case Cmd::Absorber: createGizmo(*cmd, t); break;
+      case Cmd::Gizmo: createGizmo(*cmd, t); break;
       case Cmd::Ball: createBall(t); break;
       case Cmd::Rotate: rotate(t); break;
       case Cmd::Delete: remove(t); break;
@@ -148,7 +145,6 @@ class TextReader {
   static CommandRole roleOf(Cmd c) {
     switch (c) {
       case Cmd::Gizmo: return CommandRole::Gizmo;
-      case Cmd::Absorber: return CommandRole::Absorber;
       case Cmd::Ball: return CommandRole::Ball;
       case Cmd::Connect: return CommandRole::Connect;
       default: return CommandRole::Other;
@@ -187,7 +183,7 @@ class TextReader {
       rep_.error(at(t[0]), std::string(cmd.canonical) + " needs " + std::to_string(cmd.tokens - 1) + " value" +
                                (cmd.tokens == 2 ? "" : "s") + " (" + std::string(cmd.usage) + ") but the line has " +
                                std::to_string(t.size() - 1));
-      const bool creates = cmd.cmd == Cmd::Gizmo || cmd.cmd == Cmd::Absorber || cmd.cmd == Cmd::Ball;
+      const bool creates = cmd.cmd == Cmd::Gizmo || cmd.cmd == Cmd::Ball;
       if (creates && t.size() >= 2) failed_.insert(std::string(t[1].text));
       return;
     }
@@ -367,17 +363,20 @@ class TextReader {
                                   "the lower-right y coordinate"};
     static const char* exitWhats[] = {"the x coordinate", "the y coordinate", "the exit's x coordinate",
                                       "the exit's y coordinate"};
+    // After its cell, a kind's line gives its lower-right corner (a kind sized by its line) or its
+    // exit's cell (kinds/STEM.hpp: side 0, exitCell).
+    const bool sized = sizedByLine(cmd.type), exitCell = gizmoKind(cmd.type).exitCell;
     const std::size_t count = cmd.tokens - 2;
-    for (std::size_t i = 0; i < count; ++i)
-      ok = cell(t[2 + i], cmd.type == GizmoType::Portal ? exitWhats[i] : whats[i], v[i]) && ok;
-    if (ok && cmd.cmd == Cmd::Absorber) {
+    for (std::size_t i = 0; i < count; ++i) ok = cell(t[2 + i], exitCell ? exitWhats[i] : whats[i], v[i]) && ok;
+    if (ok && sized) {
+      const std::string corner = std::string("the ") + gizmoTypeWord(cmd.type) + "'s lower-right corner must lie ";
       if (v[2] <= v[0]) {
-        rep_.error(at(t[4]), "the absorber's lower-right corner must lie right of its upper-left corner (X2 = " +
-                                 std::to_string(v[2]) + " is not more than X1 = " + std::to_string(v[0]) + ")");
+        rep_.error(at(t[4]), corner + "right of its upper-left corner (X2 = " + std::to_string(v[2]) +
+                                 " is not more than X1 = " + std::to_string(v[0]) + ")");
         ok = false;
       } else if (v[3] <= v[1]) {
-        rep_.error(at(t[5]), "the absorber's lower-right corner must lie below its upper-left corner (Y2 = " +
-                                 std::to_string(v[3]) + " is not more than Y1 = " + std::to_string(v[1]) + ")");
+        rep_.error(at(t[5]), corner + "below its upper-left corner (Y2 = " + std::to_string(v[3]) +
+                                 " is not more than Y1 = " + std::to_string(v[1]) + ")");
         ok = false;
       }
     }
@@ -387,12 +386,13 @@ class TextReader {
     }
     g.x = static_cast<int>(v[0]);
     g.y = static_cast<int>(v[1]);
-    if (cmd.cmd == Cmd::Absorber) {
+    if (sized) {
       g.width = static_cast<int>(v[2] - v[0]);
       g.height = static_cast<int>(v[3] - v[1]);
-    } else if (ownSide(cmd.type) == 2) {
-      g.width = g.height = 2;
-    } else if (cmd.type == GizmoType::Portal) {
+    } else {
+      g.width = g.height = ownSide(cmd.type);
+    }
+    if (exitCell) {
       g.exitX = static_cast<int>(v[2]);
       g.exitY = static_cast<int>(v[3]);
     }
@@ -443,8 +443,8 @@ class TextReader {
       return;
     }
     GizmoSpec& g = edits_.gizmo(*r);
-    if (g.type == GizmoType::Absorber) {
-      rep_.error(at(t[1]), "absorber " + quote(t[1].text) + " cannot be rotated");
+    if (sizedByLine(g.type)) {
+      rep_.error(at(t[1]), gizmoTypeWord(g.type) + (" " + quote(t[1].text)) + " cannot be rotated");
       return;
     }
     g.orientation = (g.orientation + 90) % 360;

@@ -340,24 +340,24 @@ class XmlReader {
   void readGizmo(const pugi::xml_node& e, GizmoType type) {
     expectEmpty(e);
     std::map<std::string, Attr> a;
-    const bool absorber = type == GizmoType::Absorber, portal = type == GizmoType::Portal;
-    const bool ok0 = absorber ? attributes(e, {"name", "x", "y", "width", "height"}, {"orientation"}, a)
-                     : portal ? attributes(e, {"name", "x", "y", "exitX", "exitY"}, {"orientation"}, a)
-                              : attributes(e, {"name", "x", "y"}, {"orientation"}, a);
+    const bool sized = sizedByLine(type), exitCell = gizmoKind(type).exitCell;
+    const bool ok0 = sized      ? attributes(e, {"name", "x", "y", "width", "height"}, {"orientation"}, a)
+                     : exitCell ? attributes(e, {"name", "x", "y", "exitX", "exitY"}, {"orientation"}, a)
+                                : attributes(e, {"name", "x", "y"}, {"orientation"}, a);
     if (!ok0) return;
     GizmoSpec g;
     g.type = type;
     g.where = elementAt(e);
     long long x = 0, y = 0, orientation = 0, width = 1, height = 1, exitX = 0, exitY = 0;
-    if (ownSide(type) == 2) width = height = 2;
+    if (!sized) width = height = ownSide(type);
     bool ok = name(a.at("name"), g.name);
     ok = whole(a.at("x"), "x", x) && ok;
     ok = whole(a.at("y"), "y", y) && ok;
-    if (absorber) {
+    if (sized) {
       ok = whole(a.at("width"), "width", width) && ok;
       ok = whole(a.at("height"), "height", height) && ok;
     }
-    if (portal) {
+    if (exitCell) {
       ok = whole(a.at("exitX"), "exitX", exitX) && ok;
       ok = whole(a.at("exitY"), "exitY", exitY) && ok;
     }

@@ -45,7 +45,7 @@ void GameBoard<Real>::checkRestoredEvent(const Event<Real>& e, const BoardState<
       break;
     }
     case EventKind::Leave:
-      if (!isGizmoId(e.a) || gizmos_[std::size_t(e.a)]->kind() != GizmoKind::Absorber || !isBallId(e.b))
+      if (!isGizmoId(e.a) || !gizmos_[std::size_t(e.a)]->makesEventKind(e.kind) || !isBallId(e.b))
         fail("not an absorber and a ball");
       break;
     case EventKind::ContactEnd:
@@ -53,12 +53,9 @@ void GameBoard<Real>::checkRestoredEvent(const Event<Real>& e, const BoardState<
     case EventKind::Recalculate:
       if (!isBallId(e.a)) fail("not a ball");
       break;
-    case EventKind::FlipperStop: {
-      const bool flipper = isGizmoId(e.a) && (gizmos_[std::size_t(e.a)]->kind() == GizmoKind::LeftFlipper ||
-                                              gizmos_[std::size_t(e.a)]->kind() == GizmoKind::RightFlipper);
-      if (!flipper) fail("not a flipper");
+    case EventKind::FlipperStop:
+      if (!isGizmoId(e.a) || !gizmos_[std::size_t(e.a)]->makesEventKind(e.kind)) fail("not a flipper");
       break;
-    }
     case EventKind::Input:
       if (e.a != kNoGizmo || (e.b != 0 && e.b != 1)) fail("not a key press or release");
       break;
@@ -79,7 +76,7 @@ void GameBoard<Real>::restoreState(const BoardState<Real>& s) {
                      std::to_string(built));
   const std::size_t spawned = s.gizmos.size() - built;
   const bool spawner =
-      std::any_of(gizmos_.begin(), gizmos_.end(), [](const auto& g) { return g->kind() == GizmoKind::Spawner; });
+      std::any_of(gizmos_.begin(), gizmos_.end(), [](const auto& g) { return g->spawnPosition().has_value(); });
   if (spawned > 0 && (!spawner || spawned > kMaxSpawnedBalls))
     throw StateError("the state has " + std::to_string(spawned) + " spawned balls, more than this board can have");
   if (spawned != spawned_) setSpawnedCount(spawned);

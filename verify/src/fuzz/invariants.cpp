@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "gizmo/core/geometry/shapes.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/verify/fuzz/checker_geometry.hpp"
@@ -29,8 +30,6 @@ constexpr int kSamplesBetweenEvents = 3;
 // side), rounded up; a spinner's: 3.14 rad/s at 0.75 L from its centre, rounded up.
 constexpr double kFlipperSurfaceSpeed = 33.0;
 constexpr double kSpinnerSurfaceSpeed = 2.5;
-
-bool turnsAsCapsules(GizmoType t) { return isFlipper(t) || t == GizmoType::Spinner; }
 
 template <class Real>
 std::string text(const Real& x) {
@@ -81,13 +80,13 @@ InvariantChecker<Real>::InvariantChecker(const GameBoard<Real>& board, std::vect
     const AbstractGizmo<Real>& g = board.gizmo(GizmoId(i));
     if (g.asBall() || GizmoId(i) == board.outerWallsId()) continue;
     const GizmoSpec spec = g.spec();
-    if (spec.type == GizmoType::Spawner) continue;  // nothing meets it
+    const Shape<Real> shape = restShape<Real>(spec);
+    if (shape.segments.empty() && shape.circles.empty()) continue;  // nothing meets it (a spawner)
     typename Geometry::Piece piece;
     piece.id = GizmoId(i);
     piece.type = spec.type;
-    const Shape<Real> shape = restShape<Real>(spec);
     if (isDiscGizmo(spec.type)) piece.centre = shape.circles.front().centre;
-    else if (!turnsAsCapsules(spec.type))
+    else if (gizmoKind(spec.type).motion == KindMotion::Still)
       for (const CircleFeature<Real>& c : shape.circles) piece.polygon.push_back(c.centre);
     geometry_->pieces.push_back(piece);
     // A ball can touch the gizmo only with its centre within a radius of its box.
@@ -138,7 +137,7 @@ void InvariantChecker<Real>::takeSnapshot() {
     if (!b.captured()) s->balls.push_back({id, b.trajectoryAt(s->time)});
   }
   for (const typename Geometry::Piece& p : geometry_->pieces) {
-    if (!turnsAsCapsules(p.type)) continue;
+    if (gizmoKind(p.type).motion == KindMotion::Still) continue;
     typename Snapshot::Turning& t = s->turning[p.id];
     if (const auto* f = dynamic_cast<const Flipper<Real>*>(&board_.gizmo(p.id))) {
       t = {{f->axisAt(s->time)}, f->swinging(), kFlipperSurfaceSpeed};
@@ -170,7 +169,8 @@ void InvariantChecker<Real>::checkOverlaps(const Real& time, const Snapshot& s, 
               cy = int(std::clamp(toDouble(p.y), 0.0, kBoardSize - 1.0));
     for (std::size_t k : geometry_->cells[cy][cx]) {
       const typename Geometry::Piece& g = geometry_->pieces[k];
-      if (g.type == GizmoType::Absorber && fired_.count({g.id, b.id})) continue;  // it ignores the ball it fired
+      // A gizmo that fired a ball (an absorber: ModelRule::Released) ignores it until it is out.
+      if (fired_.count({g.id, b.id})) continue;
       Real distance;
       if (isDiscGizmo(g.type)) {
         distance = length(Vec2<Real>(p - g.centre)) - fromDouble<Real>(0.5);
@@ -366,7 +366,7 @@ void InvariantChecker<Real>::checkCoverage() {
   }
   // A swinging flipper must have its stop pending (a spinner turns on without one).
   for (const auto& [id, turning] : snapshot_->turning) {
-    if (!turning.moving || board_.gizmo(id).kind() == GizmoKind::Spinner) continue;
+    if (!turning.moving || motionOf(board_.gizmo(id).kind()) != KindMotion::Swings) continue;
     bool stop = false;
     for (const Event<Real>& e : queue) stop = stop || (e.kind == EventKind::FlipperStop && e.a == id);
     if (!stop)

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <vector>
 
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
 #include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/io/board_writer.hpp"
@@ -189,7 +190,8 @@ bool grazes(const GameBoard<double>& board, const Event<double>& e, const EventO
   const GizmoSpec spec = board.gizmo(g).spec();
   const BallChange<double>& ball = o.changes[0];
   std::optional<GizmoTouch> touch;
-  if (spec.type == GizmoType::LeftFlipper || spec.type == GizmoType::RightFlipper) {
+  const KindMotion motion = gizmoKind(spec.type).motion;
+  if (motion == KindMotion::Swings) {
     // A still flipper is a capsule like any other round-ended shape: a ball passing its tip at a
     // tangent, rounding's hair closer in one model, is struck in that model only (campaign seed
     // 667430151, case 4778: a ball lifted 1e-7 L/s off its line by rounding amplified in a row
@@ -205,7 +207,7 @@ bool grazes(const GameBoard<double>& board, const Event<double>& e, const EventO
     touch = touchOnCapsule(axis.pivot, tip, axis.radius, ball.position);
     const bool onPivotCap = nearestPointOnSegment(ball.position, axis.pivot, tip) == axis.pivot;
     if (flipper->swinging() && !onPivotCap) return false;
-  } else if (spec.type == GizmoType::Spinner) {
+  } else if (motion == KindMotion::Turns) {
     // A still spinner is two crossed capsules, judged like a still flipper on the nearer one; a
     // turning one is not judged.
     const auto* spinner = dynamic_cast<const Spinner<double>*>(&board.gizmo(g));

@@ -9,6 +9,7 @@
 #include "gizmo/core/board_spec_check.hpp"
 #include "gizmo/core/cell_occupancy.hpp"
 #include "gizmo/core/geometry/shapes.hpp"
+#include "gizmo/core/gizmo_kinds.hpp"
 #include "gizmo/verify/fuzz/seeded_random.hpp"
 #include "kinds/verify_registry.hpp"
 
@@ -22,8 +23,6 @@ struct Builder {
   SeededRandom& rng;
   BoardSpec& board;
   CellOccupancy cells{};
-
-  bool isFlipper(GizmoType t) const { return t == GizmoType::LeftFlipper || t == GizmoType::RightFlipper; }
 
   void physics() {
     switch (rng.whole(0, 3)) {
@@ -43,16 +42,16 @@ struct Builder {
   void gizmos(int count) {
     for (int i = 0, tries = 0; i < count && tries < 4 * count; ++tries) {
       GizmoSpec g;
-      g.type = GizmoType(rng.whole(0, 5));
-      g.width = g.height = isFlipper(g.type) ? 2 : 1;
-      if (g.type == GizmoType::Absorber) {
+      g.type = GizmoType(rng.whole(0, kStandardKindCount - 1));
+      g.width = g.height = ownSide(g.type);
+      if (sizedByLine(g.type)) {
         // Every size occurs, from 1×1 to the full width; tall ones rarely, so that they leave room.
         g.width = rng.chance(4) ? kBoardSize : rng.whole(1, kBoardSize);
         g.height = rng.chance(5) ? rng.whole(1, kBoardSize) : rng.whole(1, 3);
       }
       g.x = rng.whole(0, kBoardSize - g.width);
       g.y = rng.whole(0, kBoardSize - g.height);
-      g.orientation = g.type == GizmoType::Absorber ? 0 : 90 * rng.whole(0, 3);
+      g.orientation = sizedByLine(g.type) ? 0 : 90 * rng.whole(0, 3);
       if (!cells.place(g)) continue;
       g.name = "G" + std::to_string(i++);
       board.gizmos.push_back(g);

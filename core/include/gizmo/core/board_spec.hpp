@@ -11,8 +11,9 @@
 
 namespace gizmo {
 
-// One enumerator per line of the kind list, in its order (kinds/kind_list.hpp). Booster and later
-// entries: gizmos that other Gizmoball programs added (docs/physics.md, "Gizmos other programs added").
+// One enumerator per line of the kind list, in its order (kinds/kind_list.hpp). The lines after the
+// standard kinds' (kStandardKindCount, gizmo_kinds.hpp) are gizmos that other Gizmoball programs added
+// (docs/physics.md, "Gizmos other programs added").
 #define GIZMO_KIND_ENUMERATOR(Name, stem) Name,
 enum class GizmoType { GIZMO_KINDS(GIZMO_KIND_ENUMERATOR) };
 #undef GIZMO_KIND_ENUMERATOR

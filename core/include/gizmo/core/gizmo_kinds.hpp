@@ -18,18 +18,25 @@ struct GizmoKindInfo {
   std::string_view xmlElement;   // the XML format's element ("leftFlipper")
   std::string_view word;         // in messages ("left flipper")
   std::string_view drawing;      // the drawings' class ("left-flipper")
-  int side;                      // ownSide's
+  int side;                      // ownSide's; 0: sized by its board line's corners, never turned
+  bool exitCell;                 // its board line names an exit cell (a portal)
+  KindMotion motion;             // still, swings or turns (kinds/kind_core.hpp)
+  bool holdsPlacedBalls;         // a ball placed at rest inside it starts held (the absorber)
   bool disc;                     // isDiscGizmo's
   bool xmlOrientationAlways;     // the XML writer writes its orientation when it is 0 too
   std::string_view handedness;   // "left", "right", or empty
 };
 
-// Every kind's file holds what CoreKindEntry asks for; the message names the kind and its file.
-#define GIZMO_KIND_IS_COMPLETE(Name, stem)                             \
-  static_assert(CoreKindEntry<KindCore<GizmoType::Name>>,              \
-                "kind " #Name ": core/include/gizmo/core/kinds/" #stem \
-                ".hpp lacks part of what "                             \
-                "CoreKindEntry (kinds/kind_core.hpp) asks of a kind's core file");
+// Every kind's file holds what CoreKindEntry asks for, and its kind keeps the value that logs
+// hold; the messages name the kind and its file.
+#define GIZMO_KIND_IS_COMPLETE(Name, stem)                                                              \
+  static_assert(CoreKindEntry<KindCore<GizmoType::Name>>,                                               \
+                "kind " #Name ": core/include/gizmo/core/kinds/" #stem                                  \
+                ".hpp lacks part of what "                                                              \
+                "CoreKindEntry (kinds/kind_core.hpp) asks of a kind's core file");                      \
+  static_assert(static_cast<int>(GizmoType::Name) == KindCore<GizmoType::Name>::logValue,               \
+                "kind " #Name ": its value is not the logValue of core/include/gizmo/core/kinds/" #stem \
+                ".hpp; the values are in logs: a new kind is a new line at the end of kinds/kind_list.hpp");
 GIZMO_KINDS(GIZMO_KIND_IS_COMPLETE)
 #undef GIZMO_KIND_IS_COMPLETE
 
@@ -37,12 +44,23 @@ template <GizmoType T>
 requires CoreKindEntry<KindCore<T>>
 constexpr GizmoKindInfo kindInfoOf() {
   using K = KindCore<T>;
-  return {T,          K::textCommand, K::textUsage, K::xmlElement,           K::word,
-          K::drawing, K::side,        K::disc,      K::xmlOrientationAlways, K::handedness};
+  return {T,
+          K::textCommand,
+          K::textUsage,
+          K::xmlElement,
+          K::word,
+          K::drawing,
+          K::side,
+          K::exitCell,
+          K::motion,
+          K::holdsPlacedBalls,
+          K::disc,
+          K::xmlOrientationAlways,
+          K::handedness};
 }
 
-// In GizmoType's order. Booster and after are other programs' additions, spelled as the programs
-// that invented them spell them (docs/board-files.md §2).
+// In GizmoType's order. The kinds after the standard ones (kStandardKindCount below) are other
+// programs' additions, spelled as the programs that invented them spell them (docs/board-files.md §2).
 inline constexpr std::array<GizmoKindInfo, kGizmoTypeCount> kGizmoKinds = {
 #define GIZMO_KIND_ROW(Name, stem) kindInfoOf<GizmoType::Name>(),
     GIZMO_KINDS(GIZMO_KIND_ROW)
@@ -63,6 +81,21 @@ constexpr bool kindsInTypeOrder() {
   return true;
 }
 static_assert(kindsInTypeOrder(), "kGizmoKinds must hold one row per GizmoType, in its order");
+
+// Whether a kind's size is a property its board line gives (side 0: the absorber's corners); such
+// a kind is never turned.
+constexpr bool sizedByLine(GizmoType type) { return gizmoKind(type).side == 0; }
+
+// Whether a kind swings like a flipper (its gizmo is a Flipper).
+constexpr bool swings(GizmoType type) { return gizmoKind(type).motion == KindMotion::Swings; }
+// Whether a kind turns like a spinner (its gizmo is a Spinner).
+constexpr bool turns(GizmoType type) { return gizmoKind(type).motion == KindMotion::Turns; }
+
+// How a gizmo on the board moves: its kind's motion, Still for a ball and the outer walls.
+constexpr KindMotion motionOf(GizmoKind kind) {
+  const int type = static_cast<int>(kind) - static_cast<int>(gizmoKindOf(GizmoType(0)));
+  return type >= 0 && type < kGizmoTypeCount ? kGizmoKinds[type].motion : KindMotion::Still;
+}
 
 // The number of words of a kind's text line: its command's token count.
 constexpr std::size_t textTokens(const GizmoKindInfo& k) {

@@ -15,12 +15,16 @@ class Absorber final : public GridBumper<Real> {
   explicit Absorber(const GizmoSpec& spec) : GridBumper<Real>(spec) {}
 
   GizmoKind kind() const override { return GizmoKind::Absorber; }
+  // It does more than reflect (it captures): no ball rests against it.
+  const Shape<Real>* restingShape() const override { return nullptr; }
 
   Vec2<Real> holdPosition() const {
     const GizmoSpec s = this->spec();
     const Real r = Ball<Real>::radius();
     return Vec2<Real>(Real(s.x + s.width) - r, Real(s.y + s.height) - r);
   }
+  std::optional<Vec2<Real>> heldBallPosition() const override { return holdPosition(); }
+  bool makesEventKind(EventKind k) const override { return k == EventKind::Leave; }
   static Vec2<Real> fireVelocity() { return Vec2<Real>(Real(0), Real(-50)); }
 
   const std::deque<GizmoId>& held() const { return held_; }

@@ -123,6 +123,9 @@ class AbstractGizmo {
   // Events of the gizmo's own (a flipper's stop); scheduled whenever it is recomputed.
   virtual void scheduleOwnEvents(BoardAccess<Real>& /*board*/) {}
   virtual void handleOwnEvent(const Event<Real>& /*event*/, BoardAccess<Real>& /*board*/) {}
+  // Whether it makes events of kind k that only some kinds make (a flipper's stop, an absorber's
+  // leave): what a restored state's queued events are checked against.
+  virtual bool makesEventKind(EventKind /*k*/) const { return false; }
 
   // Until when predictions made now against this gizmo hold (a swinging flipper: until it
   // stops); nullopt for a gizmo that stays as it is.
@@ -144,6 +147,12 @@ class AbstractGizmo {
   // still shape that only reflects. None for a gizmo that moves, captures, boosts or sends the
   // ball elsewhere, and for a ball.
   virtual const Shape<Real>* restingShape() const { return nullptr; }
+
+  // Where a ball it captured lies (an absorber's lower right corner, a sink's centre), for the
+  // pictures; nullopt for a gizmo that captures none.
+  virtual std::optional<Vec2<Real>> heldBallPosition() const { return std::nullopt; }
+  // Where the balls it spawns appear (a spawner's centre); nullopt for a gizmo that spawns none.
+  virtual std::optional<Vec2<Real>> spawnPosition() const { return std::nullopt; }
 
   // A ball this gizmo took out of play for good (a sink's), the one it took first, handed back to
   // the board to be spawned again: kNoGizmo when it holds none. The gizmo forgets it.

@@ -22,6 +22,8 @@ class Booster final : public GridBumper<Real> {
   explicit Booster(const GizmoSpec& spec) : GridBumper<Real>(spec) {}
 
   GizmoKind kind() const override { return GizmoKind::Booster; }
+  // It does more than reflect (it boosts): no ball rests against it.
+  const Shape<Real>* restingShape() const override { return nullptr; }
 
   // The boost applied to a velocity: doubled when the doubled speed is at most the cap,
   // otherwise unchanged (nullopt).

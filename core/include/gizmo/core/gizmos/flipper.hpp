@@ -82,6 +82,8 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     if (direction_ != 0) board.schedule(EventKind::FlipperStop, stopTime(), this->id(), kNoGizmo, -1);
   }
 
+  bool makesEventKind(EventKind k) const override { return k == EventKind::FlipperStop; }
+
   void handleOwnEvent(const Event<Real>& event, BoardAccess<Real>& board) override {
     if (event.kind != EventKind::FlipperStop || direction_ == 0) return;
     anchor(board.now(), direction_ > 0 ? swingTime() : Real(0), 0);

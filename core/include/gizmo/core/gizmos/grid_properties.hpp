@@ -11,8 +11,6 @@
 
 namespace gizmo {
 
-inline bool isFlipper(GizmoType t) { return t == GizmoType::LeftFlipper || t == GizmoType::RightFlipper; }
-
 // The properties of a gizmo on the grid: its name and cell, then its orientation, or its width and
 // height for a kind whose size is a property (a kind whose `side` is 0), and its handedness for a
 // kind that has one (kinds/STEM.hpp). Defined in core/src/grid_properties.cpp, where every kind's

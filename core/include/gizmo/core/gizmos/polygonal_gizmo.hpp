@@ -85,10 +85,9 @@ class GridBumper : public GridPlaced<AbstractGizmoWithPolygonalGeometry<Real>> {
     return Vec2<Real>(Real(s.x) + Real(s.width) / two, Real(s.y) + Real(s.height) / two);
   }
 
-  const Shape<Real>* restingShape() const override {
-    const GizmoKind k = kind();
-    return k == GizmoKind::Square || k == GizmoKind::Circle || k == GizmoKind::Triangle ? &this->shape() : nullptr;
-  }
+  // A bumper only reflects: a ball can lie against it. The kinds built on it that do more (capture,
+  // boost, teleport, sink) say otherwise in their own classes.
+  const Shape<Real>* restingShape() const override { return &this->shape(); }
 
   GizmoKind kind() const override { return gizmoKindOf(this->placement().type); }
 

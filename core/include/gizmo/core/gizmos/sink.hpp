@@ -19,6 +19,10 @@ class Sink final : public GridBumper<Real> {
   explicit Sink(const GizmoSpec& spec) : GridBumper<Real>(spec) {}
 
   GizmoKind kind() const override { return GizmoKind::Sink; }
+  // It does more than reflect (it sinks): no ball rests against it.
+  const Shape<Real>* restingShape() const override { return nullptr; }
+
+  std::optional<Vec2<Real>> heldBallPosition() const override { return this->centre(); }
 
   GizmoId handBackRetiredBall() override {
     if (held_.empty()) return kNoGizmo;

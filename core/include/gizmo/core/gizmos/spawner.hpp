@@ -29,6 +29,8 @@ class Spawner final : public GridPlaced<AbstractGizmo<Real>> {
     return Vec2<Real>(cell_.lo.x + half, cell_.lo.y + half);
   }
 
+  std::optional<Vec2<Real>> spawnPosition() const override { return centre(); }
+
   void fireTrigger(BoardAccess<Real>& board) override {
     const Vec2<Real> p = centre();
     const GizmoId ball = board.roomForBall(p, kNoGizmo, this->id()) ? board.spawnBall(p) : kNoGizmo;

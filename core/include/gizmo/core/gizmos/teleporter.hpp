@@ -22,9 +22,8 @@ class Teleporter final : public GridBumper<Real> {
     }
   }
 
-  GizmoKind kind() const override {
-    return this->spec().type == GizmoType::Portal ? GizmoKind::Portal : GizmoKind::Teleporter;
-  }
+  // It does more than reflect (it teleports): no ball rests against it.
+  const Shape<Real>* restingShape() const override { return nullptr; }
 
   // Set by the board builder from the connections: the exit and its centre.
   void setExit(GizmoId exit, const Vec2<Real>& centre) {

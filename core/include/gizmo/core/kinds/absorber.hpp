@@ -9,12 +9,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Absorber> {
+  static constexpr int logValue = 5;
   static constexpr std::string_view textCommand = "Absorber";
   static constexpr std::string_view textUsage = "Absorber NAME X1 Y1 X2 Y2";
   static constexpr std::string_view xmlElement = "absorber";
   static constexpr std::string_view word = "absorber";
   static constexpr std::string_view drawing = "absorber";
   static constexpr int side = 0;  // its box is what its file says
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Still;
+  static constexpr bool holdsPlacedBalls = true;
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";

@@ -9,12 +9,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Booster> {
+  static constexpr int logValue = 6;
   static constexpr std::string_view textCommand = "Booster";
   static constexpr std::string_view textUsage = "Booster NAME X Y";
   static constexpr std::string_view xmlElement = "booster";
   static constexpr std::string_view word = "booster";
   static constexpr std::string_view drawing = "booster";
   static constexpr int side = 1;
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Still;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "";

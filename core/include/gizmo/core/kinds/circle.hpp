@@ -8,12 +8,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Circle> {
+  static constexpr int logValue = 1;
   static constexpr std::string_view textCommand = "Circle";
   static constexpr std::string_view textUsage = "Circle NAME X Y";
   static constexpr std::string_view xmlElement = "circleBumper";
   static constexpr std::string_view word = "circle";
   static constexpr std::string_view drawing = "circle";
   static constexpr int side = 1;
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Still;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = true;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";

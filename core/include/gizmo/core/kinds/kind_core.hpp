@@ -19,6 +19,12 @@ namespace gizmo {
 template <class Real>
 class AbstractGizmo;
 
+// How a kind's outline moves, for the code that draws, saves, checks or models a gizmo in motion
+// by what it does rather than by its name: it stays still; it swings like a flipper (a capsule
+// about its pivot between two stops: the kind's gizmo is a Flipper, gizmos/flipper.hpp); or it
+// turns like a spinner (a cross turning at kSpinnerTurnRate while on: a Spinner, gizmos/spinner.hpp).
+enum class KindMotion { Still, Swings, Turns };
+
 // Each kind's core description, specialised in its own file (kinds/STEM.hpp).
 template <GizmoType T>
 struct KindCore;
@@ -33,6 +39,10 @@ struct KindTag {
 // incomplete file fails to compile with the kind's name in the message.
 template <class K>
 concept CoreKindEntry = requires(Shape<double>& shape, const GizmoSpec& spec) {
+  // Its GizmoType value, which logs and tests hold: its place in the kind list, pinned here so
+  // that a line moved, removed or inserted before the end of the list stops the build
+  // (gizmo_kinds.hpp checks each kind's value against it).
+  { K::logValue } -> std::convertible_to<int>;
   // Its names: the text command and its line (for messages; the line's word count is the
   // command's), the XML element, the word in messages, the drawing's class.
   { K::textCommand } -> std::convertible_to<std::string_view>;
@@ -40,8 +50,16 @@ concept CoreKindEntry = requires(Shape<double>& shape, const GizmoSpec& spec) {
   { K::xmlElement } -> std::convertible_to<std::string_view>;
   { K::word } -> std::convertible_to<std::string_view>;
   { K::drawing } -> std::convertible_to<std::string_view>;
-  // Its box: the side of its square box in L (0: its size is a property, as an absorber's).
+  // Its box: the side of its square box in L (0: its size is a property, as an absorber's, which
+  // its board line gives by its lower-right corner; such a kind is never turned).
   { K::side } -> std::convertible_to<int>;
+  // Whether its board line names an exit cell after its own (a portal's EX EY, exitX and exitY).
+  { K::exitCell } -> std::convertible_to<bool>;
+  // How its outline moves (KindMotion above).
+  { K::motion } -> std::convertible_to<KindMotion>;
+  // Whether a ball a board file places at rest inside its box starts held by it (the absorber:
+  // its gizmo is an Absorber, which holds it); a moving ball there is an error.
+  { K::holdsPlacedBalls } -> std::convertible_to<bool>;
   // A disc of radius 0.5 in its cell (the pictures and the fuzz checker draw and test it so).
   { K::disc } -> std::convertible_to<bool>;
   // Whether the XML writer writes its orientation attribute when it is 0 too (as the programs
@@ -66,7 +84,7 @@ constexpr decltype(auto) visitKind(GizmoType t, F&& f) {
     GIZMO_KINDS(GIZMO_KIND_CASE)
 #undef GIZMO_KIND_CASE
   }
-  return std::forward<F>(f)(KindTag<GizmoType::Square>{});  // not reached: every GizmoType is a case
+  return std::forward<F>(f)(KindTag<GizmoType(0)>{});  // not reached: every GizmoType is a case
 }
 
 // Calls f(KindTag<T>{}) for every kind, in the list's order.
@@ -76,15 +94,5 @@ constexpr void forEachKind(F&& f) {
   GIZMO_KINDS(GIZMO_KIND_CALL)
 #undef GIZMO_KIND_CALL
 }
-
-// The values of GizmoType are in logs and tests: a kind line moved or inserted before the end of
-// the list would change them.
-static_assert(static_cast<int>(GizmoType::Square) == 0 && static_cast<int>(GizmoType::Circle) == 1 &&
-                  static_cast<int>(GizmoType::Triangle) == 2 && static_cast<int>(GizmoType::LeftFlipper) == 3 &&
-                  static_cast<int>(GizmoType::RightFlipper) == 4 && static_cast<int>(GizmoType::Absorber) == 5 &&
-                  static_cast<int>(GizmoType::Booster) == 6 && static_cast<int>(GizmoType::Teleporter) == 7 &&
-                  static_cast<int>(GizmoType::Sink) == 8 && static_cast<int>(GizmoType::Portal) == 9 &&
-                  static_cast<int>(GizmoType::Spinner) == 10 && static_cast<int>(GizmoType::Spawner) == 11,
-              "GizmoType's values are in logs and tests: add a kind at the end of kinds/kind_list.hpp");
 
 }  // namespace gizmo

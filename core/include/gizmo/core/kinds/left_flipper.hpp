@@ -9,12 +9,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::LeftFlipper> {
+  static constexpr int logValue = 3;
   static constexpr std::string_view textCommand = "LeftFlipper";
   static constexpr std::string_view textUsage = "LeftFlipper NAME X Y";
   static constexpr std::string_view xmlElement = "leftFlipper";
   static constexpr std::string_view word = "left flipper";
   static constexpr std::string_view drawing = "left-flipper";
   static constexpr int side = 2;
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Swings;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "left";

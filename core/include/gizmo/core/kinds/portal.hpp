@@ -9,12 +9,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Portal> {
+  static constexpr int logValue = 9;
   static constexpr std::string_view textCommand = "Portal";
   static constexpr std::string_view textUsage = "Portal NAME X Y EXITX EXITY";
   static constexpr std::string_view xmlElement = "portal";
   static constexpr std::string_view word = "portal";
   static constexpr std::string_view drawing = "portal";
   static constexpr int side = 1;
+  static constexpr bool exitCell = true;
+  static constexpr KindMotion motion = KindMotion::Still;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = true;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";

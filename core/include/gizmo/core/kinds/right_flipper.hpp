@@ -9,12 +9,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::RightFlipper> {
+  static constexpr int logValue = 4;
   static constexpr std::string_view textCommand = "RightFlipper";
   static constexpr std::string_view textUsage = "RightFlipper NAME X Y";
   static constexpr std::string_view xmlElement = "rightFlipper";
   static constexpr std::string_view word = "right flipper";
   static constexpr std::string_view drawing = "right-flipper";
   static constexpr int side = 2;
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Swings;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "right";

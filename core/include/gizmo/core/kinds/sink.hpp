@@ -9,12 +9,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Sink> {
+  static constexpr int logValue = 8;
   static constexpr std::string_view textCommand = "Sink";
   static constexpr std::string_view textUsage = "Sink NAME X Y";
   static constexpr std::string_view xmlElement = "sink";
   static constexpr std::string_view word = "sink";
   static constexpr std::string_view drawing = "sink";
   static constexpr int side = 1;
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Still;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "";

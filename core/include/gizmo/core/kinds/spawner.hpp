@@ -9,12 +9,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Spawner> {
+  static constexpr int logValue = 11;
   static constexpr std::string_view textCommand = "Spawner";
   static constexpr std::string_view textUsage = "Spawner NAME X Y";
   static constexpr std::string_view xmlElement = "spawner";
   static constexpr std::string_view word = "spawner";
   static constexpr std::string_view drawing = "spawner";
   static constexpr int side = 1;
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Still;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";

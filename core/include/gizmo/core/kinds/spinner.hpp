@@ -9,12 +9,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Spinner> {
+  static constexpr int logValue = 10;
   static constexpr std::string_view textCommand = "Spinner";
   static constexpr std::string_view textUsage = "Spinner NAME X Y";
   static constexpr std::string_view xmlElement = "spinner";
   static constexpr std::string_view word = "spinner";
   static constexpr std::string_view drawing = "spinner";
   static constexpr int side = 2;
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Turns;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";

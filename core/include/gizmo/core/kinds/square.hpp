@@ -8,12 +8,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Square> {
+  static constexpr int logValue = 0;
   static constexpr std::string_view textCommand = "Square";
   static constexpr std::string_view textUsage = "Square NAME X Y";
   static constexpr std::string_view xmlElement = "squareBumper";
   static constexpr std::string_view word = "square";
   static constexpr std::string_view drawing = "square";
   static constexpr int side = 1;
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Still;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";

@@ -9,12 +9,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Teleporter> {
+  static constexpr int logValue = 7;
   static constexpr std::string_view textCommand = "Teleporter";
   static constexpr std::string_view textUsage = "Teleporter NAME X Y";
   static constexpr std::string_view xmlElement = "teleporter";
   static constexpr std::string_view word = "teleporter";
   static constexpr std::string_view drawing = "teleporter";
   static constexpr int side = 1;
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Still;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = true;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";

@@ -9,12 +9,16 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Triangle> {
+  static constexpr int logValue = 2;
   static constexpr std::string_view textCommand = "Triangle";
   static constexpr std::string_view textUsage = "Triangle NAME X Y";
   static constexpr std::string_view xmlElement = "triangleBumper";
   static constexpr std::string_view word = "triangle";
   static constexpr std::string_view drawing = "triangle";
   static constexpr int side = 1;
+  static constexpr bool exitCell = false;
+  static constexpr KindMotion motion = KindMotion::Still;
+  static constexpr bool holdsPlacedBalls = false;
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "";
