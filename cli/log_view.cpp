@@ -168,8 +168,8 @@ bool isKindName(std::string_view kind) {
     if (eventKindName(EventKind(k)) == kind) return true;
   for (int t = 0; t <= int(DecisionType::Time); ++t)
     if (replay::decisionTypeName(DecisionType(t)) == kind) return true;
-  for (int r = 0; r <= int(kLastModelRule); ++r)
-    if (modelRuleName(ModelRule(r)) == kind) return true;
+  for (int r = 0; r < kModelRuleCodeCount; ++r)
+    if (!kind.empty() && modelRuleName(ModelRule(r)) == kind) return true;
   return false;
 }
 

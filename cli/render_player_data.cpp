@@ -154,7 +154,7 @@ Json runJson(const PlayerRun& run) {
 Json namesJson() {
   Json kinds = Json::array(), rules = Json::array(), decisions = Json::array();
   for (int k = 0; k < kEventKindCount; ++k) kinds.push_back(std::string(eventKindName(static_cast<EventKind>(k))));
-  for (int r = 0; r <= static_cast<int>(kLastModelRule); ++r)
+  for (int r = 0; r < kModelRuleCodeCount; ++r)  // a code no rule has: an empty name, never in a log
     rules.push_back(std::string(modelRuleName(static_cast<ModelRule>(r))));
   for (int d = 0; d <= static_cast<int>(replay::DecisionType::Time); ++d)
     decisions.push_back(std::string(replay::decisionTypeName(static_cast<replay::DecisionType>(d))));

@@ -156,15 +156,15 @@ RunTrack trackRun(const replay::OpenedLog& log, double tolerance) {
       case replay::DecisionType::Rule: {
         BallPathBuilder* ball = builderOf(d->other);
         // A sunk ball is held at the sink's centre for good, as a captured one at its absorber's corner.
-        const bool held = d->rule == ModelRule::Captured || d->rule == ModelRule::Sunk;
+        const bool held = d->rule == AbsorberRule::Captured || d->rule == SinkRule::Sunk;
         if (held && ball && hold.count(d->gizmo)) ball->captured(event, now, hold[d->gizmo]);
-        if (d->rule == ModelRule::Released && ball && hold.count(d->gizmo))
+        if (d->rule == AbsorberRule::Released && ball && hold.count(d->gizmo))
           ball->released(event, now, hold[d->gizmo], Absorber<double>::fireVelocity());
-        if (d->rule == ModelRule::Teleported)
+        if (d->rule == TeleporterRule::Teleported)
           if (const auto* t = dynamic_cast<const Teleporter<double>*>(&board->gizmo(d->gizmo)))
             teleported[d->other] = t;
-        if (d->rule == ModelRule::FlipperBlocked && flippers.count(d->gizmo)) flippers[d->gizmo].blocked(event, now);
-        if (d->rule == ModelRule::Spawned && spawnAt.count(d->gizmo)) {
+        if (d->rule == FlipperRule::Blocked && flippers.count(d->gizmo)) flippers[d->gizmo].blocked(event, now);
+        if (d->rule == SpawnerRule::Spawned && spawnAt.count(d->gizmo)) {
           // A ball a sink held comes back; a new one starts its track here, at rest.
           const Vec2<double> p = spawnAt[d->gizmo];
           if (ball) {

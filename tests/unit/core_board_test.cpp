@@ -8,6 +8,7 @@
 
 #include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/core/gizmos/teleporter.hpp"
 #include "support/board_builder.hpp"
 #include "support/stub_board.hpp"
 
@@ -286,7 +287,7 @@ TEST(Absorber, AFiredBallTakenAwayBeforeItLeftIsOut) {
     ASSERT_TRUE(b1.captured() && b2.captured()) << motionModelName(model);
     board->scheduleInput(0.1, 32, KeyDirection::Down);
     board->tick(0.2);
-    ASSERT_EQ(rec.countRule(ModelRule::Teleported), 1) << motionModelName(model);
+    ASSERT_EQ(rec.countRule(TeleporterRule::Teleported), 1) << motionModelName(model);
     EXPECT_FALSE(b1.captured()) << motionModelName(model);
     EXPECT_LT(b1.positionAt(board->now()).y, 12.0) << motionModelName(model);  // out through T2
     EXPECT_TRUE(b2.captured()) << motionModelName(model);
@@ -442,7 +443,7 @@ TEST(Flipper, PinchedBallBlocksTheSwingInsteadOfLooping) {
   board->setObserver(&rec);
   board->scheduleInput(0.0, 32, KeyDirection::Down);
   board->tick(1.0);
-  ASSERT_EQ(rec.countRule(ModelRule::FlipperBlocked), 1);
+  ASSERT_EQ(rec.countRule(FlipperRule::Blocked), 1);
   const GizmoId F = *board->find("F");
   const auto& flipper = dynamic_cast<const Flipper<double>&>(board->gizmo(F));
   EXPECT_TRUE(flipper.blocked());
@@ -451,7 +452,7 @@ TEST(Flipper, PinchedBallBlocksTheSwingInsteadOfLooping) {
   EXPECT_LT(flipper.progressAt(board->now()), Flipper<double>::swingTime());
   double blockedAt = 0;
   for (std::size_t i = 0; i < rec.rules.size(); ++i)
-    if (rec.rules[i].first == ModelRule::FlipperBlocked) blockedAt = rec.ruleTimes[i];
+    if (rec.rules[i].first == FlipperRule::Blocked) blockedAt = rec.ruleTimes[i];
   int flipperHits = 0;
   for (const auto& e : rec.ofKind(EventKind::Collision)) flipperHits += e.event.a == F && e.event.time <= blockedAt;
   EXPECT_LE(flipperHits, board->params().pinchLimit + 1);

@@ -54,7 +54,7 @@ TEST(Booster, ASlantedHitByHand) {
   const Recorder<double>::Executed& hit = hits[0];
   EXPECT_EQ(hit.event.a, u);
   EXPECT_NEAR(hit.event.time, (2.5 - 0.25 * std::sqrt(2.0)) / 10, 1e-15);
-  EXPECT_EQ(rec.countRule(ModelRule::Boosted), 1);
+  EXPECT_EQ(rec.countRule(BoosterRule::Boosted), 1);
   const Vec2<double> v = board->ballById(b).velocityAt(board->now());
   EXPECT_NEAR(v.x, 20, 1e-12);
   EXPECT_NEAR(v.y, 0, 1e-12);
@@ -73,7 +73,7 @@ TEST(Booster, TheCapOnAnUprightFace) {
     board->tick(0.00224);  // the hit comes at 5.25 / speed, 0.0021 s; the wall no sooner than 0.0045 s
     ASSERT_EQ(rec.ofKind(EventKind::Collision).size(), 1u) << speed;
     const bool doubled = speed == 2500.0;
-    EXPECT_EQ(rec.countRule(ModelRule::Boosted), doubled ? 1 : 0) << speed;
+    EXPECT_EQ(rec.countRule(BoosterRule::Boosted), doubled ? 1 : 0) << speed;
     EXPECT_EQ(board->ballById(*board->find("B")).velocityAt(board->now()), Vec2<double>(doubled ? -5000.0 : -speed, 0))
         << speed;
   }

@@ -27,7 +27,7 @@ TEST(Sink, AFallingBallIsTakenOutOfPlayAtItsCentre) {
     ASSERT_EQ(hits.size(), 1u) << motionModelName(model);
     EXPECT_EQ(hits[0].event.a, k);
     EXPECT_NEAR(hits[0].event.time, 0.175, 1e-14);
-    ASSERT_EQ(rec.countRule(ModelRule::Sunk), 1);
+    ASSERT_EQ(rec.countRule(SinkRule::Sunk), 1);
     EXPECT_EQ(rec.rules.front().second, k);
     const Ball<double>& ball = board->ballById(b);
     EXPECT_TRUE(ball.captured());
@@ -48,7 +48,7 @@ TEST(Sink, ItTakesEveryBallAndHoldsThemForGood) {
   Recorder<double> rec;
   board->setObserver(&rec);
   board->tick(5.0);
-  EXPECT_EQ(rec.countRule(ModelRule::Sunk), 2);
+  EXPECT_EQ(rec.countRule(SinkRule::Sunk), 2);
   EXPECT_EQ(rec.ofKind(EventKind::Collision).size(), 2u);
   for (const char* name : {"B1", "B2"}) {
     const Ball<double>& ball = board->ballById(*board->find(name));

@@ -38,7 +38,7 @@ TEST(Spawner, AKeyPutsANewBallAtRestAtItsCentre) {
   EXPECT_EQ(id, 2);  // after the walls and the spawner
   const Ball<double>& ball = board->ballById(id);
   EXPECT_EQ(ball.name(), "Spawned2");
-  EXPECT_EQ(count(rec, ModelRule::Spawned), 1u);
+  EXPECT_EQ(count(rec, SpawnerRule::Spawned), 1u);
   // At rest at (5.5, 5.5) at t = 0.1, then 0.2 s of falling: ½ · 25 · 0.2² = 0.5 L lower.
   EXPECT_DOUBLE_EQ(ball.positionAt(0.1).y, 5.5);
   EXPECT_NEAR(ball.positionAt(board->now()).x, 5.5, 1e-15);
@@ -54,8 +54,8 @@ TEST(Spawner, ABallStillAtItsCentreBlocksTheNextOne) {
   board->scheduleInput(0.2, 32, KeyDirection::Down);
   board->tick(0.3);
   EXPECT_EQ(board->ballIds().size(), 1u);
-  EXPECT_EQ(count(rec, ModelRule::Spawned), 1u);
-  EXPECT_EQ(count(rec, ModelRule::SpawnBlocked), 1u);
+  EXPECT_EQ(count(rec, SpawnerRule::Spawned), 1u);
+  EXPECT_EQ(count(rec, SpawnerRule::Blocked), 1u);
 }
 
 TEST(Spawner, BallsPassThroughIt) {
@@ -81,8 +81,8 @@ TEST(Spawner, ItTakesTheBallASinkHoldsBeforeAddingOne) {
   board->setObserver(&rec);
   board->tick(0.7);  // it meets the sink's top (centre at y = 9.75) after sqrt(2 · 4.75 / 25) s
   const double hit = std::sqrt(2 * 4.75 / 25);
-  ASSERT_EQ(count(rec, ModelRule::Sunk), 1u);
-  ASSERT_EQ(count(rec, ModelRule::Spawned), 1u);
+  ASSERT_EQ(count(rec, SinkRule::Sunk), 1u);
+  ASSERT_EQ(count(rec, SpawnerRule::Spawned), 1u);
   ASSERT_EQ(board->ballIds().size(), 1u);
   const Ball<double>& ball = board->ballById(*board->find("B"));
   EXPECT_FALSE(ball.captured());
@@ -137,11 +137,11 @@ TEST(Spawner, AddsAtMostItsLimitOfNewBalls) {
   board->setObserver(&rec);
   for (int second = 0; second < 120 && board->ballIds().size() <= kMaxSpawnedBalls; ++second) board->tick(1);
   ASSERT_EQ(board->ballIds().size(), 1 + kMaxSpawnedBalls);
-  const std::size_t blocked = count(rec, ModelRule::SpawnBlocked);
+  const std::size_t blocked = count(rec, SpawnerRule::Blocked);
   board->tick(2);
   EXPECT_EQ(board->ballIds().size(), 1 + kMaxSpawnedBalls);
-  EXPECT_EQ(count(rec, ModelRule::Spawned), kMaxSpawnedBalls);
-  EXPECT_GT(count(rec, ModelRule::SpawnBlocked), blocked);
+  EXPECT_EQ(count(rec, SpawnerRule::Spawned), kMaxSpawnedBalls);
+  EXPECT_GT(count(rec, SpawnerRule::Blocked), blocked);
 }
 
 TEST(Spawner, ABoardWithoutOneRefusesAStateWithSpawnedBalls) {

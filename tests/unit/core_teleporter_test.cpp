@@ -32,8 +32,8 @@ TEST(Teleporter, APassThroughByHand) {
   ASSERT_EQ(rec.ofKind(EventKind::Collision).size(), 1u);
   EXPECT_EQ(rec.ofKind(EventKind::Collision)[0].event.a, a);
   EXPECT_DOUBLE_EQ(rec.ofKind(EventKind::Collision)[0].event.time, 0.225);
-  ASSERT_EQ(rec.countRule(ModelRule::Teleported), 1);
-  EXPECT_EQ(rec.rules[0], std::make_pair(ModelRule::Teleported, a));
+  ASSERT_EQ(rec.countRule(TeleporterRule::Teleported), 1);
+  EXPECT_EQ(rec.rules[0], std::make_pair(TeleporterRule::Teleported, a));
   const Ball<double>& ball = board->ballById(k);
   EXPECT_EQ(ball.velocityAt(board->now()), Vec2<double>(10, 0));
   EXPECT_NEAR(ball.positionAt(board->now()).x, 16, 1e-12);
@@ -59,7 +59,7 @@ TEST(Teleporter, WithoutARoomyExitItIsACircleBumper) {
     Recorder<double> rec;
     board->setObserver(&rec);
     board->tick(0.3);
-    EXPECT_EQ(rec.countRule(ModelRule::Teleported), 0);
+    EXPECT_EQ(rec.countRule(TeleporterRule::Teleported), 0);
     const Ball<double>& ball = board->ballById(*board->find("K"));
     EXPECT_EQ(ball.velocityAt(board->now()), Vec2<double>(-10, 0));
     EXPECT_NEAR(ball.positionAt(board->now()).x, 3.0, 1e-12);
@@ -105,8 +105,8 @@ TEST(Portal, APassThroughByHand) {
   EXPECT_EQ(board->gizmo(a).kind(), GizmoKind::Portal);
   ASSERT_EQ(rec.ofKind(EventKind::Collision).size(), 1u);
   EXPECT_DOUBLE_EQ(rec.ofKind(EventKind::Collision)[0].event.time, 0.225);
-  ASSERT_EQ(rec.countRule(ModelRule::Teleported), 1);
-  EXPECT_EQ(rec.rules[0], std::make_pair(ModelRule::Teleported, a));
+  ASSERT_EQ(rec.countRule(TeleporterRule::Teleported), 1);
+  EXPECT_EQ(rec.rules[0], std::make_pair(TeleporterRule::Teleported, a));
   const Ball<double>& ball = board->ballById(*board->find("K"));
   EXPECT_EQ(ball.velocityAt(board->now()), Vec2<double>(10, 0));
   EXPECT_NEAR(ball.positionAt(board->now()).x, 16, 1e-12);
@@ -131,7 +131,7 @@ TEST(Portal, ItsExitIsTheCellItsLineNames) {
   Recorder<double> rec;
   bumper->setObserver(&rec);
   bumper->tick(0.3);
-  EXPECT_EQ(rec.countRule(ModelRule::Teleported), 0);
+  EXPECT_EQ(rec.countRule(TeleporterRule::Teleported), 0);
   EXPECT_EQ(bumper->ballById(*bumper->find("K")).velocityAt(bumper->now()), Vec2<double>(-10, 0));
 }
 

@@ -4,6 +4,7 @@
 // added to the list is tested here without a test of its own (docs/design.md, "Adding a gizmo").
 #include <gtest/gtest.h>
 
+#include <array>
 #include <ostream>
 #include <string>
 
@@ -140,7 +141,8 @@ TEST_P(EveryKind, TheGeneratorMakesIt) {
 INSTANTIATE_TEST_SUITE_P(Registry, EveryKind, ::testing::ValuesIn(everyKind()),
                          [](const ::testing::TestParamInfo<KindCase>& info) { return info.param.stem; });
 
-// GizmoType and GizmoKind follow the list with the values that logs and tests hold.
+// GizmoType and GizmoKind are generated from the list in its order (GizmoKind after its Ball and
+// OuterWalls): the tables indexed by them (kGizmoKinds, motionOf) rely on it.
 TEST(KindRegistry, ValuesFollowTheList) {
   int i = 0;
 #define GIZMO_KIND_VALUE(Name, stem)                                         \
@@ -150,6 +152,20 @@ TEST(KindRegistry, ValuesFollowTheList) {
   GIZMO_KINDS(GIZMO_KIND_VALUE)
 #undef GIZMO_KIND_VALUE
   EXPECT_EQ(i, kGizmoTypeCount);
+}
+
+// Each rule's code is in logs (docs/replay-format.md, the model rules' table): the board's own
+// rules and the kinds' (declared by their behaviour classes, named by their kinds' files) keep
+// the codes that logs written before hold, and the names that `gizmo dump` prints and `--only`
+// takes.
+TEST(KindRegistry, RuleCodesAreTheLogs) {
+  const std::array<std::string_view, kModelRuleCodeCount> names = {
+      "friction",        "contact-begin", "contact-end",   "minimum-bounce", "wedged",     "flipper-blocked",
+      "captured",        "released",      "jammed",        "boosted",        "teleported", "sunk",
+      "spinner-blocked", "spawned",       "spawn-blocked", "settled"};
+  for (int code = 0; code < kModelRuleCodeCount; ++code)
+    EXPECT_EQ(modelRuleName(static_cast<ModelRule>(code)), names[code]) << "code " << code;
+  EXPECT_EQ(modelRuleName(static_cast<ModelRule>(kModelRuleCodeCount)), "");
 }
 
 }  // namespace

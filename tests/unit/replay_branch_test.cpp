@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "gizmo/core/gizmos/spawner.hpp"
 #include "gizmo/core/run/run.hpp"
 #include "gizmo/io/key_script.hpp"
 #include "gizmo/replay/checksum.hpp"
@@ -195,7 +196,7 @@ std::vector<Point> branchPoints(const OpenedLog& parent, const std::vector<Decis
     if (v.type == DecisionType::Executed && v.kind == EventKind::FlipperStop && pressed && !midSwing &&
         v.eventIndex > *pressed)
       midSwing = v.eventIndex;  // the last event before the flipper stops
-    if (v.type == DecisionType::Rule && v.rule == ModelRule::Spawned && !spawned) spawned = v.eventIndex;
+    if (v.type == DecisionType::Rule && v.rule == SpawnerRule::Spawned && !spawned) spawned = v.eventIndex;
   }
   auto add = [&](const std::optional<std::uint64_t>& n, const std::string& what) {
     if (n) points.push_back({*n, what});

@@ -66,6 +66,19 @@ std::vector<Box2dPart> spinnerParts() {
   return parts;
 }
 
+// A sensor's contacts go to the Absorber's capture and shot (box2d_driver.cpp): a kind the bridge
+// makes a sensor must be one whose gizmo is an Absorber, which its core entry holdsPlacedBalls says
+// (tests/unit/kinds_registry_test.cpp checks that entry against the gizmo each kind builds).
+constexpr bool sensorsAreAbsorbers() {
+  bool all = true;
+  forEachKind([&]<GizmoType T>(KindTag<T>) {
+    if (KindVerify<T>::box2dSensor && !KindCore<T>::holdsPlacedBalls) all = false;
+  });
+  return all;
+}
+static_assert(sensorsAreAbsorbers(),
+              "a kind whose verify file sets box2dSensor must be one whose gizmo is an Absorber");
+
 // A kind the bridge does not model says so, and why, in its own file (verify/src/kinds/STEM.hpp):
 // refused by name rather than compared as something else.
 std::optional<std::string> cannotModel(const GizmoSpec& gizmo) {
@@ -105,7 +118,7 @@ Box2dBody box2dBodyOf(const GizmoSpec& gizmo) {
   }
   if (const std::optional<std::string> why = cannotModel(gizmo)) throw std::invalid_argument(*why);
   const Shape<double> shape = restShape<double>(gizmo);
-  body.sensor = gizmo.type == GizmoType::Absorber;
+  body.sensor = verifyFact(gizmo.type, [](auto k) { return k.box2dSensor; });
   if (shape.segments.empty()) body.parts.push_back(circlePart(shape.circles.at(0).centre, shape.circles.at(0).radius));
   else body.parts.push_back(polygonPart(insetPolygon(shape.segments, kBox2dPolygonSkin)));
   return body;

@@ -413,11 +413,9 @@ SweepVerdict compareSweep(const StraightSweep& s) {
 
 std::string describeSweep(const StraightSweep& s) {
   char buf[512];
-  static constexpr const char* kTypeNames[] = {"Square",      "Circle",       "Triangle",
-                                               "LeftFlipper", "RightFlipper", "Absorber"};
   const char* obstacle = s.kind == SweepKind::Ball ? "another ball"
                          : s.walls                 ? "OuterWalls"
-                                                   : kTypeNames[int(s.gizmo.type)];
+                                                   : gizmoKind(s.gizmo.type).textCommand.data();
   std::snprintf(buf, sizeof buf, "kind %s, obstacle %s at (%d, %d) orientation %d, ball p (%a, %a) v (%a, %a)",
                 std::string(sweepKindName(s.kind)).c_str(), obstacle, s.gizmo.x, s.gizmo.y, s.gizmo.orientation, s.p.x,
                 s.p.y, s.v.x, s.v.y);

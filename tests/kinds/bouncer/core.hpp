@@ -17,7 +17,6 @@ class Bouncer final : public GridBumper<Real> {
 
 template <>
 struct KindCore<GizmoType::Bouncer> {
-  static constexpr int logValue = 12;
   static constexpr std::string_view textCommand = "Bouncer";
   static constexpr std::string_view textUsage = "Bouncer NAME X Y";
   static constexpr std::string_view xmlElement = "bouncer";
@@ -30,7 +29,7 @@ struct KindCore<GizmoType::Bouncer> {
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 0>{};
+  static constexpr auto rules = std::array<KindRule, 0>{};
 
   // A diamond looks the same turned by a quarter: the orientation changes nothing.
   template <class Real>

@@ -21,6 +21,8 @@ struct KindVerify<GizmoType::Bouncer> {
   static constexpr std::string_view exactRunRefusal =
       "has 45-degree edges, whose unit normals (sqrt(2)/2) are irrational";
   static constexpr bool box2dModels = true;
+  static constexpr bool box2dSensor = false;
+  static constexpr RuleEnergy ruleEnergy(ModelRule /*none: it records no rule*/) { return {}; }
 };
 
 }  // namespace gizmo::verify

@@ -11,6 +11,8 @@
 
 #include "gizmo/core/board/game_board.hpp"
 #include "gizmo/core/decimal_text.hpp"
+#include "gizmo/core/gizmos/absorber.hpp"
+#include "gizmo/core/gizmos/sink.hpp"
 #include "gizmo/verify/fuzz/expectations.hpp"
 
 namespace gizmo::verify::fuzz {
@@ -88,9 +90,9 @@ class ExpectationChecker final : public BoardObserver<double> {
     moment(e.time);
   }
   void modelRuleApplied(const double& time, ModelRule rule, GizmoId gizmo, GizmoId other) override {
-    if (rule == ModelRule::Captured) {
+    if (rule == AbsorberRule::Captured) {
       if (BallWatch* b = find(other)) b->capturedBy.emplace(gizmo, time);
-    } else if (rule == ModelRule::Sunk) {
+    } else if (rule == SinkRule::Sunk) {
       if (BallWatch* b = find(other)) {
         if (!b->outOfPlay) sunk(other, *b, gizmo, time);
         b->outOfPlay = time;

@@ -1,6 +1,7 @@
 #include "gizmo/verify/fuzz/invariants.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/verify/fuzz/checker_geometry.hpp"
 #include "gizmo/verify/fuzz/run_description.hpp"
+#include "kinds/verify_registry.hpp"
 
 namespace gizmo::verify::fuzz {
 
@@ -23,6 +25,17 @@ std::string_view invariantName(Invariant i) {
 }
 
 namespace {
+
+// What each rule code does to energy: nothing for the board's own rules (the invariants treat
+// the minimum bounce themselves), and for a kind's rule what its verify file says.
+constexpr std::array<RuleEnergy, kModelRuleCodeCount> ruleEnergies() {
+  std::array<RuleEnergy, kModelRuleCodeCount> energies{};
+  forEachKind([&]<GizmoType T>(KindTag<T>) {
+    for (const KindRule& k : KindCore<T>::rules) energies[static_cast<int>(k.rule)] = KindVerify<T>::ruleEnergy(k.rule);
+  });
+  return energies;
+}
+constexpr std::array<RuleEnergy, kModelRuleCodeCount> kRuleEnergies = ruleEnergies();
 
 // Instants looked at between two events, evenly spaced inside the interval.
 constexpr int kSamplesBetweenEvents = 3;
@@ -169,7 +182,7 @@ void InvariantChecker<Real>::checkOverlaps(const Real& time, const Snapshot& s, 
               cy = int(std::clamp(toDouble(p.y), 0.0, kBoardSize - 1.0));
     for (std::size_t k : geometry_->cells[cy][cx]) {
       const typename Geometry::Piece& g = geometry_->pieces[k];
-      // A gizmo that fired a ball (an absorber: ModelRule::Released) ignores it until it is out.
+      // A gizmo that fired a ball (a rule of effect Fired: an absorber's shot) ignores it until it is out.
       if (fired_.count({g.id, b.id})) continue;
       Real distance;
       if (isDiscGizmo(g.type)) {
@@ -255,22 +268,22 @@ template <class Real>
 void InvariantChecker<Real>::modelRuleApplied(const Real& time, ModelRule rule, GizmoId gizmo, GizmoId other) {
   timePasses(time, "a model rule");
   const PhysicsParams<Real>& params = board_.params();
-  if (rule == ModelRule::Released) {
-    fired_.insert({gizmo, other});
-    released_.push_back(other);
-  }
-  // A spawned ball comes into play with all its energy, as a fired one does.
-  if (rule == ModelRule::Spawned) released_.push_back(other);
   // The documented minimum bounce: at most ½·restSpeed² per slow hit on something round.
   if (rule == ModelRule::MinimumBounce) allowance_ += params.restSpeed * params.restSpeed / Real(2);
-  // A booster doubles the speed it reports, reported before it does: the kinetic energy ½|v|²
-  // becomes ½|2v|², a rise of 3·½|v|².
-  // A teleport moves the ball, reported before it does: the rise in height it may bring is
-  // settled after the event (checkEnergy).
-  if (rule == ModelRule::Teleported) teleported_.emplace_back(other, board_.gizmo(other).asBall()->positionAt(time).y);
-  if (rule == ModelRule::Boosted) {
-    const Vec2<Real> v = board_.gizmo(other).asBall()->velocityAt(time);
-    allowance_ += Real(3) * lengthSquared(v) / Real(2);
+  // A kind's rule: what its verify file says the rule does to the ball it names.
+  const RuleEnergy energy = kRuleEnergies[static_cast<int>(rule)];
+  switch (energy.effect) {
+    case RuleEffect::Kept: break;
+    case RuleEffect::Fired: fired_.insert({gizmo, other}); [[fallthrough]];
+    case RuleEffect::Brought: released_.push_back(other); break;
+    // Settled after the event (checkEnergy), from the height before.
+    case RuleEffect::Lifted: teleported_.emplace_back(other, board_.gizmo(other).asBall()->positionAt(time).y); break;
+    case RuleEffect::SpeedScaled: {
+      const Vec2<Real> v = board_.gizmo(other).asBall()->velocityAt(time);
+      const int k = energy.speedFactor;
+      allowance_ += Real(k * k - 1) * lengthSquared(v) / Real(2);
+      break;
+    }
   }
 }
 

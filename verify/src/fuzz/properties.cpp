@@ -414,8 +414,9 @@ std::span<const Property> allProperties() {
       {"no-tunnelling", "no ball inside a gizmo or beyond a wall, at every event and between events", &noTunnelling,
        Invariant::NoTunnelling},
       {"energy",
-       "energy rises only by what flipper hits, absorber shots and boosters supply; friction ticks slow balls", &energy,
-       Invariant::Energy},
+       "energy rises only by what moving surfaces and the gizmos' rules supply (a shot, a spawn, a boost, a "
+       "teleport); friction ticks slow balls",
+       &energy, Invariant::Energy},
       {"event-queue", "time never goes back; the queue holds exactly the pending events; every moving ball is covered",
        &eventQueue, Invariant::EventQueue},
       {"replay-identity", "recording twice gives the same log, and replaying it gives the same decisions",

@@ -21,6 +21,9 @@ struct KindVerify<GizmoType::Booster> {
   static constexpr std::string_view exactRunRefusal =
       "has a 45-degree edge, whose unit normal (sqrt(2)/2) is irrational";
   static constexpr bool box2dModels = true;
+  static constexpr bool box2dSensor = false;
+  // It doubles the speed of the ball it reflects.
+  static constexpr RuleEnergy ruleEnergy(ModelRule /*boosted*/) { return {RuleEffect::SpeedScaled, 2}; }
 };
 
 }  // namespace gizmo::verify

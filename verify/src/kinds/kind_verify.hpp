@@ -30,6 +30,24 @@ concept GeneratedByConversion = requires(GizmoSpec& g, BoardSpec& board, fuzz::S
   K::afterConversions(board, own);
 };
 
+// What one of a kind's rules (KindCore::rules) may do to the energy of the ball it names (the
+// rule's other gizmo), beyond what the event's own reflection does, for the fuzz invariants' energy
+// check (verify/src/fuzz/invariants.cpp).
+enum class RuleEffect {
+  Kept,         // nothing more: the rule keeps energy or takes it (a capture, a pinch, a sink)
+  Fired,        // the ball leaves with all its energy from inside the gizmo's outline, which
+                // overlaps it until the gizmo's Leave event (an absorber's shot)
+  Brought,      // the ball comes into play with all its energy (a spawn)
+  Lifted,       // the ball moves, reported before it does, and may gain the height between (a teleport)
+  SpeedScaled,  // the ball's speed is multiplied by speedFactor, reported before it is: ½|v|² may
+                // rise by (speedFactor² − 1)·½|v|² (a boost)
+};
+
+struct RuleEnergy {
+  RuleEffect effect = RuleEffect::Kept;
+  int speedFactor = 1;
+};
+
 template <class K>
 concept VerifyKindEntry = requires {
   // Generation: whether the generator converts gizmos into it (GeneratedByConversion), whether
@@ -47,6 +65,12 @@ concept VerifyKindEntry = requires {
   { K::exactRunRefusal } -> std::convertible_to<std::string_view>;
   // Whether the Box2D bridge models it (verify/src/box2d_mapping.cpp reports it by name if not).
   { K::box2dModels } -> std::convertible_to<bool>;
+  // Whether the bridge makes it a Box2D sensor, which reports the balls that enter and leave it
+  // while the core decides what happens to them: its gizmo must be an Absorber, whose capture and
+  // shot the bridge's driver calls (verify/src/box2d_driver.cpp).
+  { K::box2dSensor } -> std::convertible_to<bool>;
+  // What each of its rules does to energy (RuleEffect above); asked only of its own rules.
+  { K::ruleEnergy(ModelRule{}) } -> std::convertible_to<RuleEnergy>;
 }
 &&(!K::generatedByConversion || GeneratedByConversion<K>);
 

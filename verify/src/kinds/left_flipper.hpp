@@ -16,6 +16,9 @@ struct KindVerify<GizmoType::LeftFlipper> {
   static constexpr bool touchedBesideCapsule = true;
   static constexpr std::string_view exactRunRefusal = "";
   static constexpr bool box2dModels = true;
+  static constexpr bool box2dSensor = false;
+  // A pinch stops it where it is: nothing gained.
+  static constexpr RuleEnergy ruleEnergy(ModelRule /*blocked*/) { return {}; }
 };
 
 }  // namespace gizmo::verify

@@ -23,6 +23,9 @@ struct KindVerify<GizmoType::Portal> {
   static constexpr bool touchedBesideCapsule = false;
   static constexpr std::string_view exactRunRefusal = "";
   static constexpr bool box2dModels = true;
+  static constexpr bool box2dSensor = false;
+  // A teleport moves the ball to its exit, which may be higher.
+  static constexpr RuleEnergy ruleEnergy(ModelRule /*teleported*/) { return {RuleEffect::Lifted}; }
 };
 
 }  // namespace gizmo::verify

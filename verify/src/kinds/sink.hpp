@@ -19,6 +19,9 @@ struct KindVerify<GizmoType::Sink> {
   static constexpr bool touchedBesideCapsule = false;
   static constexpr std::string_view exactRunRefusal = "";
   static constexpr bool box2dModels = true;
+  static constexpr bool box2dSensor = false;
+  // A sunk ball leaves play with its energy.
+  static constexpr RuleEnergy ruleEnergy(ModelRule /*sunk*/) { return {}; }
 };
 
 }  // namespace gizmo::verify

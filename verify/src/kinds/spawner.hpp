@@ -1,5 +1,6 @@
 #pragma once
 // The spawner. What the fuzz generator and the verification checks know of it.
+#include "gizmo/core/gizmos/spawner.hpp"
 #include "kinds/kind_verify.hpp"
 
 namespace gizmo::verify {
@@ -22,6 +23,11 @@ struct KindVerify<GizmoType::Spawner> {
   // The Box2D bridge would need bodies added to the world as the board runs, which it does not
   // do yet: refused by name rather than compared as something else.
   static constexpr bool box2dModels = false;
+  static constexpr bool box2dSensor = false;
+  // A spawned ball comes into play with all its energy, as a fired one does.
+  static constexpr RuleEnergy ruleEnergy(ModelRule r) {
+    return r == SpawnerRule::Spawned ? RuleEnergy{RuleEffect::Brought} : RuleEnergy{};
+  }
 };
 
 }  // namespace gizmo::verify

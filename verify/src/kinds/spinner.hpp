@@ -23,6 +23,9 @@ struct KindVerify<GizmoType::Spinner> {
   // No exact run: its arms' angles are irrational.
   static constexpr std::string_view exactRunRefusal = "turns through angles whose sines and cosines are irrational";
   static constexpr bool box2dModels = true;
+  static constexpr bool box2dSensor = false;
+  // A pinch stops it where it is: nothing gained.
+  static constexpr RuleEnergy ruleEnergy(ModelRule /*blocked*/) { return {}; }
 };
 
 }  // namespace gizmo::verify

@@ -15,6 +15,8 @@ struct KindVerify<GizmoType::Square> {
   static constexpr bool touchedBesideCapsule = false;
   static constexpr std::string_view exactRunRefusal = "";
   static constexpr bool box2dModels = true;
+  static constexpr bool box2dSensor = false;
+  static constexpr RuleEnergy ruleEnergy(ModelRule /*none: it records no rule*/) { return {}; }
 };
 
 }  // namespace gizmo::verify

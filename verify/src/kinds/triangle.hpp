@@ -17,6 +17,8 @@ struct KindVerify<GizmoType::Triangle> {
   static constexpr std::string_view exactRunRefusal =
       "has a 45-degree edge, whose unit normal (sqrt(2)/2) is irrational";
   static constexpr bool box2dModels = true;
+  static constexpr bool box2dSensor = false;
+  static constexpr RuleEnergy ruleEnergy(ModelRule /*none: it records no rule*/) { return {}; }
 };
 
 }  // namespace gizmo::verify

@@ -27,16 +27,38 @@ struct GizmoKindInfo {
   std::string_view handedness;   // "left", "right", or empty
 };
 
-// Every kind's file holds what CoreKindEntry asks for, and its kind keeps the value that logs
-// hold; the messages name the kind and its file.
-#define GIZMO_KIND_IS_COMPLETE(Name, stem)                                                              \
-  static_assert(CoreKindEntry<KindCore<GizmoType::Name>>,                                               \
-                "kind " #Name ": core/include/gizmo/core/kinds/" #stem                                  \
-                ".hpp lacks part of what "                                                              \
-                "CoreKindEntry (kinds/kind_core.hpp) asks of a kind's core file");                      \
-  static_assert(static_cast<int>(GizmoType::Name) == KindCore<GizmoType::Name>::logValue,               \
-                "kind " #Name ": its value is not the logValue of core/include/gizmo/core/kinds/" #stem \
-                ".hpp; the values are in logs: a new kind is a new line at the end of kinds/kind_list.hpp");
+// Whether every rule a kind's file names has a code that a record holds and that none of the
+// board's own rules has, a name, and no code or name that another rule has with a different
+// meaning (the two flippers name one rule, which is fine): its code is in logs, its name in the
+// logs' readings.
+template <GizmoType T>
+constexpr bool rulesAreItsOwn() {
+  for (const KindRule& mine : KindCore<T>::rules) {
+    if (static_cast<int>(mine.rule) >= kModelRuleCodeCount || !boardRuleName(mine.rule).empty() || mine.name.empty())
+      return false;
+    for (int code = 0; code < kModelRuleCodeCount; ++code)
+      if (boardRuleName(static_cast<ModelRule>(code)) == mine.name) return false;
+    bool agree = true;
+    forEachKind([&]<GizmoType U>(KindTag<U>) {
+      for (const KindRule& other : KindCore<U>::rules)
+        if ((other.rule == mine.rule) != (other.name == mine.name)) agree = false;
+    });
+    if (!agree) return false;
+  }
+  return true;
+}
+
+// Every kind's file holds what CoreKindEntry asks for, and its rules are its own; the messages
+// name the kind and its file.
+#define GIZMO_KIND_IS_COMPLETE(Name, stem)                                            \
+  static_assert(CoreKindEntry<KindCore<GizmoType::Name>>,                             \
+                "kind " #Name ": core/include/gizmo/core/kinds/" #stem                \
+                ".hpp lacks part of what "                                            \
+                "CoreKindEntry (kinds/kind_core.hpp) asks of a kind's core file");    \
+  static_assert(rulesAreItsOwn<GizmoType::Name>(),                                    \
+                "kind " #Name ": a rule that core/include/gizmo/core/kinds/" #stem    \
+                ".hpp names has no name, a code beyond 15 or one of the board's own " \
+                "(board/model_rule.hpp), or the code or name of another rule");
 GIZMO_KINDS(GIZMO_KIND_IS_COMPLETE)
 #undef GIZMO_KIND_IS_COMPLETE
 

@@ -470,7 +470,7 @@ class RecordDecoder {
         d.key = static_cast<int>(bounded(INT32_MIN, INT32_MAX));
         return d;
       case RecordType::Rule:
-        if ((tag & 15) > static_cast<int>(kLastModelRule)) throw FormatError("unknown model rule", start);
+        if (modelRuleName(static_cast<ModelRule>(tag & 15)).empty()) throw FormatError("unknown model rule", start);
         d.type = DecisionType::Rule;
         d.rule = static_cast<ModelRule>(tag & 15);
         d.gizmo = gizmoId();

@@ -171,7 +171,7 @@ std::optional<SwingTouch<Real>> swingTouchNow(const Trajectory<Real>& ball, cons
     // σ = +1 for side 0, −1 for side 1: it turns the Coriolis term with the side (across
     // already has it, through the side's normal). Without it a ball running along side 1 as
     // that side turned into it counted as opening and was not hit: it passed into the flipper
-    // (the generator's first draw with boosters, classic, gravity 1000: docs/fuzzing.md).
+    // (a generated board of the fuzzer's first draw, classic, gravity 1000: docs/fuzzing.md).
     const Real sigma = feature == 0 ? Real(1) : Real(-1);
     touch.bend = sigma * Real(2) * axis.omega * dot(ball.v, u) - axis.omega * axis.omega * across;
     // At the pivot end, closer than the ball's position resolution counts as along the side: a

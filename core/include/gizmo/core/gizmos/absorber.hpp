@@ -9,6 +9,12 @@
 
 namespace gizmo {
 
+// The absorber's rules (model_rule.hpp): their codes are in logs.
+struct AbsorberRule {
+  static constexpr ModelRule Captured{6};  // it captured a ball
+  static constexpr ModelRule Released{7};  // it fired a ball
+};
+
 template <class Real>
 class Absorber final : public GridBumper<Real> {
  public:
@@ -61,7 +67,7 @@ class Absorber final : public GridBumper<Real> {
     Ball<Real>& ball = board.ballById(id);
     ball.release(board.now(), holdPosition(), fireVelocity(), board.params());
     firedInside_.push_back(id);
-    board.reportRule(ModelRule::Released, this->id(), id);
+    board.reportRule(AbsorberRule::Released, this->id(), id);
     board.markForRecompute(id);
     board.markForRecompute(this->id());
   }
@@ -91,7 +97,7 @@ class Absorber final : public GridBumper<Real> {
   void respond(Ball<Real>& ball, const Contact<Real>&, BoardAccess<Real>& board) override {
     ball.capture(board.now(), holdPosition());
     held_.push_back(ball.id());
-    board.reportRule(ModelRule::Captured, this->id(), ball.id());
+    board.reportRule(AbsorberRule::Captured, this->id(), ball.id());
   }
 
  private:

@@ -16,6 +16,11 @@ namespace gizmo {
 // a ball where the checks do not reach.
 inline constexpr double kMaxBoostedSpeed = 5000;
 
+// The booster's rule (model_rule.hpp): its code is in logs.
+struct BoosterRule {
+  static constexpr ModelRule Boosted{9};  // it doubled a ball's speed
+};
+
 template <class Real>
 class Booster final : public GridBumper<Real> {
  public:
@@ -44,7 +49,7 @@ class Booster final : public GridBumper<Real> {
     if (after == before) return;
     const std::optional<Vec2<Real>> v = boosted(after);
     if (!v) return;
-    board.reportRule(ModelRule::Boosted, this->id(), ball.id());
+    board.reportRule(BoosterRule::Boosted, this->id(), ball.id());
     ball.setVelocity(now, ball.positionAt(now), *v, board);
   }
 };

@@ -12,6 +12,11 @@
 
 namespace gizmo {
 
+// The flippers' rule (model_rule.hpp): its code is in logs.
+struct FlipperRule {
+  static constexpr ModelRule Blocked{5};  // a flipper pinching a ball stops where it is
+};
+
 template <class Real>
 class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
  public:
@@ -254,7 +259,7 @@ class Flipper final : public GridPlaced<AbstractGizmo<Real>> {
     const Real& now = board.now();
     anchor(now, progressAt(now), 0);
     blocked_ = true;
-    board.reportRule(ModelRule::FlipperBlocked, this->id(), ball);
+    board.reportRule(FlipperRule::Blocked, this->id(), ball);
     board.markForRecompute(this->id());
   }
 

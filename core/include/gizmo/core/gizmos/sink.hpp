@@ -13,6 +13,11 @@
 
 namespace gizmo {
 
+// The sink's rule (model_rule.hpp): its code is in logs.
+struct SinkRule {
+  static constexpr ModelRule Sunk{11};  // it took a ball out of play
+};
+
 template <class Real>
 class Sink final : public GridBumper<Real> {
  public:
@@ -46,7 +51,7 @@ class Sink final : public GridBumper<Real> {
     ball.leaveContact(board);
     ball.capture(board.now(), this->centre());
     held_.push_back(ball.id());
-    board.reportRule(ModelRule::Sunk, this->id(), ball.id());
+    board.reportRule(SinkRule::Sunk, this->id(), ball.id());
   }
 
  private:

@@ -13,6 +13,12 @@
 
 namespace gizmo {
 
+// The spawner's rules (model_rule.hpp): their codes are in logs.
+struct SpawnerRule {
+  static constexpr ModelRule Spawned{13};  // it put a ball at its centre (the other gizmo: that ball)
+  static constexpr ModelRule Blocked{14};  // it acted with no room at its centre, or no ball to be had
+};
+
 template <class Real>
 class Spawner final : public GridPlaced<AbstractGizmo<Real>> {
  public:
@@ -34,7 +40,7 @@ class Spawner final : public GridPlaced<AbstractGizmo<Real>> {
   void fireTrigger(BoardAccess<Real>& board) override {
     const Vec2<Real> p = centre();
     const GizmoId ball = board.roomForBall(p, kNoGizmo, this->id()) ? board.spawnBall(p) : kNoGizmo;
-    board.reportRule(ball == kNoGizmo ? ModelRule::SpawnBlocked : ModelRule::Spawned, this->id(), ball);
+    board.reportRule(ball == kNoGizmo ? SpawnerRule::Blocked : SpawnerRule::Spawned, this->id(), ball);
   }
 
  protected:

@@ -15,6 +15,11 @@
 
 namespace gizmo {
 
+// The spinner's rule (model_rule.hpp): its code is in logs.
+struct SpinnerRule {
+  static constexpr ModelRule Blocked{12};  // a spinner pinching a ball stops where it stands
+};
+
 template <class Real>
 class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
  public:
@@ -231,7 +236,7 @@ class Spinner final : public GridPlaced<AbstractGizmo<Real>> {
   // True when it stopped.
   bool countHit(GizmoId ball, BoardAccess<Real>& board) {
     if (!pinch_.hit(ball, board.params().pinchLimit)) return false;
-    board.reportRule(ModelRule::SpinnerBlocked, this->id(), ball);
+    board.reportRule(SpinnerRule::Blocked, this->id(), ball);
     toggle(board);
     blocked_ = true;
     return true;

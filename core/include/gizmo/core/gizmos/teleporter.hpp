@@ -12,6 +12,11 @@
 
 namespace gizmo {
 
+// The rule of the teleporter and the portal (model_rule.hpp): its code is in logs.
+struct TeleporterRule {
+  static constexpr ModelRule Teleported{10};  // it moved a ball to its exit
+};
+
 template <class Real>
 class Teleporter final : public GridBumper<Real> {
  public:
@@ -46,7 +51,7 @@ class Teleporter final : public GridBumper<Real> {
     if (exitCentre_ && dot(v, Vec2<Real>(p - this->centre())) < Real(0)) {
       const Vec2<Real> q = exitPosition(p);
       if (board.roomForBall(q, ball.id(), exit_.value_or(kNoGizmo))) {
-        board.reportRule(ModelRule::Teleported, this->id(), ball.id());
+        board.reportRule(TeleporterRule::Teleported, this->id(), ball.id());
         ball.leaveContact(board);
         ball.setState(now, q, v, board.params());
         return;

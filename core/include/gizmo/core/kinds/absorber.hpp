@@ -9,7 +9,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Absorber> {
-  static constexpr int logValue = 5;
   static constexpr std::string_view textCommand = "Absorber";
   static constexpr std::string_view textUsage = "Absorber NAME X1 Y1 X2 Y2";
   static constexpr std::string_view xmlElement = "absorber";
@@ -22,7 +21,8 @@ struct KindCore<GizmoType::Absorber> {
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 2>{ModelRule::Captured, ModelRule::Released};
+  static constexpr auto rules =
+      std::array{KindRule{AbsorberRule::Captured, "captured"}, KindRule{AbsorberRule::Released, "released"}};
 
   template <class Real>
   static void addRestShape(Shape<Real>& s, const GizmoSpec& g) {

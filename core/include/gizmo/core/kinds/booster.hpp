@@ -9,7 +9,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Booster> {
-  static constexpr int logValue = 6;
   static constexpr std::string_view textCommand = "Booster";
   static constexpr std::string_view textUsage = "Booster NAME X Y";
   static constexpr std::string_view xmlElement = "booster";
@@ -22,7 +21,7 @@ struct KindCore<GizmoType::Booster> {
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 1>{ModelRule::Boosted};
+  static constexpr auto rules = std::array{KindRule{BoosterRule::Boosted, "boosted"}};
 
   // At rest its right angle is at the lower left (d-g-n's BoosterGizmo.java): the triangle turned
   // three quarters.

@@ -8,7 +8,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Circle> {
-  static constexpr int logValue = 1;
   static constexpr std::string_view textCommand = "Circle";
   static constexpr std::string_view textUsage = "Circle NAME X Y";
   static constexpr std::string_view xmlElement = "circleBumper";
@@ -21,7 +20,7 @@ struct KindCore<GizmoType::Circle> {
   static constexpr bool disc = true;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 0>{};
+  static constexpr auto rules = std::array<KindRule, 0>{};
 
   template <class Real>
   static void addRestShape(Shape<Real>& s, const GizmoSpec& g) {

@@ -25,6 +25,14 @@ class AbstractGizmo;
 // turns like a spinner (a cross turning at kSpinnerTurnRate while on: a Spinner, gizmos/spinner.hpp).
 enum class KindMotion { Still, Swings, Turns };
 
+// A model rule that a kind records, and its name: the word that `gizmo dump`, the player and the
+// fuzz reports print, and that `gizmo dump --only` takes. Its code (board/model_rule.hpp) is
+// declared by the kind's behaviour class, as AbsorberRule::Captured in gizmos/absorber.hpp.
+struct KindRule {
+  ModelRule rule;
+  std::string_view name;
+};
+
 // Each kind's core description, specialised in its own file (kinds/STEM.hpp).
 template <GizmoType T>
 struct KindCore;
@@ -39,10 +47,6 @@ struct KindTag {
 // incomplete file fails to compile with the kind's name in the message.
 template <class K>
 concept CoreKindEntry = requires(Shape<double>& shape, const GizmoSpec& spec) {
-  // Its GizmoType value, which logs and tests hold: its place in the kind list, pinned here so
-  // that a line moved, removed or inserted before the end of the list stops the build
-  // (gizmo_kinds.hpp checks each kind's value against it).
-  { K::logValue } -> std::convertible_to<int>;
   // Its names: the text command and its line (for messages; the line's word count is the
   // command's), the XML element, the word in messages, the drawing's class.
   { K::textCommand } -> std::convertible_to<std::string_view>;
@@ -67,8 +71,9 @@ concept CoreKindEntry = requires(Shape<double>& shape, const GizmoSpec& spec) {
   { K::xmlOrientationAlways } -> std::convertible_to<bool>;
   // Its handedness property ("left", "right"), empty for a kind without one.
   { K::handedness } -> std::convertible_to<std::string_view>;
-  // The model rules (board/model_rule.hpp) that only this kind records.
-  {std::span<const ModelRule>(K::rules)};
+  // The model rules that only this kind records, each with its name in logs' readings
+  // (board/model_rule.hpp); gizmo_kinds.hpp checks them against every other rule.
+  {std::span<const KindRule>(K::rules)};
   // Its outline at rest, in board coordinates (what restShape returns for it).
   K::template addRestShape<double>(shape, spec);
   // The gizmo the board builds for it.

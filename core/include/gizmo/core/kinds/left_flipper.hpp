@@ -9,7 +9,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::LeftFlipper> {
-  static constexpr int logValue = 3;
   static constexpr std::string_view textCommand = "LeftFlipper";
   static constexpr std::string_view textUsage = "LeftFlipper NAME X Y";
   static constexpr std::string_view xmlElement = "leftFlipper";
@@ -22,7 +21,7 @@ struct KindCore<GizmoType::LeftFlipper> {
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "left";
-  static constexpr auto rules = std::array<ModelRule, 1>{ModelRule::FlipperBlocked};
+  static constexpr auto rules = std::array{KindRule{FlipperRule::Blocked, "flipper-blocked"}};
 
   template <class Real>
   static void addRestShape(Shape<Real>& s, const GizmoSpec& g) {

@@ -9,7 +9,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Portal> {
-  static constexpr int logValue = 9;
   static constexpr std::string_view textCommand = "Portal";
   static constexpr std::string_view textUsage = "Portal NAME X Y EXITX EXITY";
   static constexpr std::string_view xmlElement = "portal";
@@ -22,7 +21,7 @@ struct KindCore<GizmoType::Portal> {
   static constexpr bool disc = true;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 0>{};
+  static constexpr auto rules = std::array{KindRule{TeleporterRule::Teleported, "teleported"}};
 
   template <class Real>
   static void addRestShape(Shape<Real>& s, const GizmoSpec& g) {

@@ -9,7 +9,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::RightFlipper> {
-  static constexpr int logValue = 4;
   static constexpr std::string_view textCommand = "RightFlipper";
   static constexpr std::string_view textUsage = "RightFlipper NAME X Y";
   static constexpr std::string_view xmlElement = "rightFlipper";
@@ -22,7 +21,7 @@ struct KindCore<GizmoType::RightFlipper> {
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "right";
-  static constexpr auto rules = std::array<ModelRule, 1>{ModelRule::FlipperBlocked};
+  static constexpr auto rules = std::array{KindRule{FlipperRule::Blocked, "flipper-blocked"}};
 
   template <class Real>
   static void addRestShape(Shape<Real>& s, const GizmoSpec& g) {

@@ -9,7 +9,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Sink> {
-  static constexpr int logValue = 8;
   static constexpr std::string_view textCommand = "Sink";
   static constexpr std::string_view textUsage = "Sink NAME X Y";
   static constexpr std::string_view xmlElement = "sink";
@@ -22,7 +21,7 @@ struct KindCore<GizmoType::Sink> {
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 1>{ModelRule::Sunk};
+  static constexpr auto rules = std::array{KindRule{SinkRule::Sunk, "sunk"}};
 
   template <class Real>
   static void addRestShape(Shape<Real>& s, const GizmoSpec& g) {

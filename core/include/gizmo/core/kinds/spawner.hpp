@@ -9,7 +9,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Spawner> {
-  static constexpr int logValue = 11;
   static constexpr std::string_view textCommand = "Spawner";
   static constexpr std::string_view textUsage = "Spawner NAME X Y";
   static constexpr std::string_view xmlElement = "spawner";
@@ -22,7 +21,8 @@ struct KindCore<GizmoType::Spawner> {
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 2>{ModelRule::Spawned, ModelRule::SpawnBlocked};
+  static constexpr auto rules =
+      std::array{KindRule{SpawnerRule::Spawned, "spawned"}, KindRule{SpawnerRule::Blocked, "spawn-blocked"}};
 
   // Nothing meets it: balls pass through its cell.
   template <class Real>

@@ -9,7 +9,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Spinner> {
-  static constexpr int logValue = 10;
   static constexpr std::string_view textCommand = "Spinner";
   static constexpr std::string_view textUsage = "Spinner NAME X Y";
   static constexpr std::string_view xmlElement = "spinner";
@@ -22,7 +21,7 @@ struct KindCore<GizmoType::Spinner> {
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 1>{ModelRule::SpinnerBlocked};
+  static constexpr auto rules = std::array{KindRule{SpinnerRule::Blocked, "spinner-blocked"}};
 
   // A cross looks the same turned by any whole quarter: the orientation changes nothing.
   template <class Real>

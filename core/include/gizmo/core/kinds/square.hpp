@@ -8,7 +8,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Square> {
-  static constexpr int logValue = 0;
   static constexpr std::string_view textCommand = "Square";
   static constexpr std::string_view textUsage = "Square NAME X Y";
   static constexpr std::string_view xmlElement = "squareBumper";
@@ -21,7 +20,7 @@ struct KindCore<GizmoType::Square> {
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 0>{};
+  static constexpr auto rules = std::array<KindRule, 0>{};
 
   template <class Real>
   static void addRestShape(Shape<Real>& s, const GizmoSpec& g) {

@@ -9,7 +9,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Teleporter> {
-  static constexpr int logValue = 7;
   static constexpr std::string_view textCommand = "Teleporter";
   static constexpr std::string_view textUsage = "Teleporter NAME X Y";
   static constexpr std::string_view xmlElement = "teleporter";
@@ -22,7 +21,7 @@ struct KindCore<GizmoType::Teleporter> {
   static constexpr bool disc = true;
   static constexpr bool xmlOrientationAlways = false;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 1>{ModelRule::Teleported};
+  static constexpr auto rules = std::array{KindRule{TeleporterRule::Teleported, "teleported"}};
 
   template <class Real>
   static void addRestShape(Shape<Real>& s, const GizmoSpec& g) {

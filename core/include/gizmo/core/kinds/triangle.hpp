@@ -9,7 +9,6 @@ namespace gizmo {
 
 template <>
 struct KindCore<GizmoType::Triangle> {
-  static constexpr int logValue = 2;
   static constexpr std::string_view textCommand = "Triangle";
   static constexpr std::string_view textUsage = "Triangle NAME X Y";
   static constexpr std::string_view xmlElement = "triangleBumper";
@@ -22,7 +21,7 @@ struct KindCore<GizmoType::Triangle> {
   static constexpr bool disc = false;
   static constexpr bool xmlOrientationAlways = true;
   static constexpr std::string_view handedness = "";
-  static constexpr auto rules = std::array<ModelRule, 0>{};
+  static constexpr auto rules = std::array<KindRule, 0>{};
 
   template <class Real>
   static void addRestShape(Shape<Real>& s, const GizmoSpec& g) {
