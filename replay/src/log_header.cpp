@@ -130,11 +130,18 @@ LogHeader decodeHeader(std::span<const std::uint8_t> payload, std::uint16_t vers
 RunRequest requestOf(const LogHeader& h) {
   if (checksum64(asBytes(h.board)) != h.boardHash) throw FormatError("header: the board does not match its hash", 0);
   RunRequest r;
+  io::ReadResult read;
   try {
-    r.board = io::readBoardString(h.board, "the log's board").board;
+    read = io::readBoardString(h.board, "the log's board");
   } catch (const std::exception& e) {
     throw FormatError(std::string("header: the embedded board does not read: ") + e.what(), 0);
   }
+  // The board is in the writer's canonical text, which the build that wrote it reads as written: a
+  // warning here means this build reads it otherwise (a kind it was built without, or one from
+  // after it), and every gizmo id after the line it leaves out would name another gizmo.
+  if (!read.warnings.empty())
+    throw FormatError("header: this build does not read the log's board as written: " + io::format(read.warnings[0]), 0);
+  r.board = std::move(read.board);
   r.model = h.model;
   r.maxTick = h.maxTick;
   r.duration = h.duration;

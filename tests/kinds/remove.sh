@@ -4,9 +4,10 @@
 # are its three kind files (core, verify, drawing), its example board and its behaviour class
 # (core/include/gizmo/core/gizmos/STEM.hpp) when no file outside its own and the tests includes it.
 # The copy's gizmo command must then build with no other edit, run every remaining kind's example
-# board, refuse a board with the kind (file, line, what is wrong), and refuse a log that the tree's
-# gizmo recorded on such a board rather than read it as something else. The tree itself is the
-# kind added back: its files and its line.
+# board, read a board with the kind as one with a command it does not know (the line left out, with
+# a warning naming file, line and command), and refuse a log that the tree's gizmo recorded on such
+# a board rather than read it as something else. The tree itself is the kind added back: its files
+# and its line.
 # Usage: tests/kinds/remove.sh [STEM] [WORK_DIR] (default build/kind-removal: the copy in
 # WORK_DIR/src, built in its build/release). The tree's gizmo (build/release/cli/gizmo) records the
 # log; it is built first when missing.
@@ -58,28 +59,35 @@ gizmo=$build/cli/gizmo
 # Every remaining kind's example board runs.
 count=0
 for board in "$src"/fixtures/boards/gizmos/*.txt; do
-  "$gizmo" run "$board" --time 2 >/dev/null
+  "$gizmo" run "$board" --time 2 >/dev/null 2>"$work/err.txt" || { cat "$work/err.txt" >&2; exit 1; }
   count=$((count + 1))
 done
 echo "kind removal: the copy's gizmo ran the $count remaining kinds' example boards" >&2
 
-# A board with the kind is refused with its file and line; so is a log recorded on it.
+# A board with the kind is read as any board with a command of another program that the reader
+# does not know: its line left out, with a warning that names the file, the line and the command.
 board=fixtures/boards/gizmos/$stem.txt
-if "$gizmo" run "$board" --time 1 >"$work/out.txt" 2>"$work/err.txt"; then
-  echo "remove.sh: the copy's gizmo ran $board, which has a $name" >&2
-  exit 1
-fi
-grep -q "$(basename "$board"):[0-9]" "$work/err.txt" || {
+command=$(sed -n 's/^ *\([A-Za-z]*\) .*/\1/p' "$board" | grep -v -x -e Ball -e Connect -e KeyConnect -e Gravity -e Friction -e Rotate | head -n 1)
+"$gizmo" run "$board" --time 1 >/dev/null 2>"$work/err.txt"
+grep -q "$(basename "$board"):[0-9]*:[0-9]*: warning: '$command' is not a command" "$work/err.txt" || {
   cat "$work/err.txt" >&2
-  echo "remove.sh: the refusal of $board names no line" >&2
+  echo "remove.sh: the copy's gizmo read $board without a warning that names the line of '$command'" >&2
   exit 1
 }
-[ ! -s "$work/out.txt" ] || { echo "remove.sh: the refusal of $board printed output" >&2; exit 1; }
-echo "kind removal: its board refused: $(head -n 1 "$work/err.txt")" >&2
-"$tree_gizmo" record "$board" --time 2 -o "$work/$stem.gzlog" >/dev/null
-if "$gizmo" replay "$work/$stem.gzlog" >"$work/out.txt" 2>"$work/err.txt"; then
-  echo "remove.sh: the copy's gizmo replayed a log of a board with a $name" >&2
-  exit 1
-fi
-echo "kind removal: its log refused: $(head -n 1 "$work/err.txt")" >&2
+echo "kind removal: its board read without it: $(grep "'$command'" "$work/err.txt" | cut -c1-160)…" >&2
+# A log that the tree's gizmo recorded on that board is refused at its header, before any record:
+# read otherwise, every gizmo id after the kind's line would name another gizmo.
+"$tree_gizmo" record "$board" --time 2 -o "$work/$stem.gzlog" >/dev/null 2>&1
+for view in replay dump; do
+  if "$gizmo" "$view" "$work/$stem.gzlog" >"$work/out.txt" 2>"$work/err.txt"; then
+    echo "remove.sh: the copy's gizmo $view took a log of a board with a $name" >&2
+    exit 1
+  fi
+  grep -q "does not read the log's board as written" "$work/err.txt" && [ ! -s "$work/out.txt" ] || {
+    cat "$work/err.txt" >&2
+    echo "remove.sh: the copy's gizmo $view did not refuse the log at its header, or printed output" >&2
+    exit 1
+  }
+done
+echo "kind removal: its log refused: $(tail -n 1 "$work/err.txt" | cut -c1-160)…" >&2
 echo "kind removal: passed (the $name taken out by its own files and one line)" >&2

@@ -388,6 +388,24 @@ TEST(ReplayLog, AHeaderFromAnotherVersionIsNoted) {
   EXPECT_EQ(replayLog(original).note, "");
 }
 
+// A log whose board this build reads otherwise than the build that wrote it (here a command
+// spelled as no kind this build knows, as a build without a kind reads a board with one) is
+// refused by name and line: read leniently, every gizmo id after the line left out would name
+// another gizmo.
+TEST(ReplayLog, ABoardThisBuildReadsOtherwiseIsRefused) {
+  const Recorded& rec = specExample(5.0);
+  const OpenedLog original = openBytes(rec.bytes);
+  LogHeader h = decodeHeader(original.reader.headerPayload());
+  const std::size_t at = h.board.find("Square ");
+  ASSERT_NE(at, std::string::npos);
+  h.board.replace(at, 6, "Sqware");  // the same length, so the frame keeps its size
+  h.boardHash = checksum64(std::span(reinterpret_cast<const std::uint8_t*>(h.board.data()), h.board.size()));
+  const std::string message = messageOf([&] { (void)replayLog(openBytes(withHeader(rec.bytes, h))); });
+  EXPECT_TRUE(contains(message, "does not read the log's board as written") && contains(message, "'Sqware'") &&
+              contains(message, "the log's board:"))
+      << message;
+}
+
 // A log whose header names another binary format for its scalar (as a long-double log of another
 // machine does): replaying it and comparing it with a log of this build's format are refused,
 // naming both formats.
