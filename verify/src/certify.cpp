@@ -83,6 +83,11 @@ BoardLayout layoutOf(GameBoard<double>& board) {
         const GizmoSpec s = g.spec();
         L.rect = {double(s.x), double(s.y), double(s.width), double(s.height)};
       }
+    } else {
+      // A gizmo of a class of its own that neither swings nor turns keeps its outline at rest,
+      // which its kind's file gives (KindCore::addRestShape): empty for the spawner, which nothing
+      // meets, and a new still kind's outline however its class holds it.
+      L.shape = restShape<double>(g.spec());
     }
     if (id != 0 && L.kind != LayoutKind::Ball) {  // the walls are checked against every ball
       auto cell = [](double v) { return std::clamp(int(std::floor(v)), 0, BoardLayout::kCells - 1); };
