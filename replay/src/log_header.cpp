@@ -140,7 +140,8 @@ RunRequest requestOf(const LogHeader& h) {
   // warning here means this build reads it otherwise (a kind it was built without, or one from
   // after it), and every gizmo id after the line it leaves out would name another gizmo.
   if (!read.warnings.empty())
-    throw FormatError("header: this build does not read the log's board as written: " + io::format(read.warnings[0]), 0);
+    throw FormatError("header: this build does not read the log's board as written: " + io::format(read.warnings[0]),
+                      0);
   r.board = std::move(read.board);
   r.model = h.model;
   r.maxTick = h.maxTick;
