@@ -11,6 +11,8 @@
 #include "gizmo/core/gizmo_kinds.hpp"
 #include "gizmo/core/gizmos/absorber.hpp"
 #include "gizmo/core/gizmos/flipper.hpp"
+#include "gizmo/core/gizmos/sink.hpp"
+#include "gizmo/core/gizmos/spawner.hpp"
 #include "gizmo/core/gizmos/spinner.hpp"
 #include "gizmo/core/gizmos/teleporter.hpp"
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "gizmo/core/gizmos/sink.hpp"
 #include "gizmo/core/gizmos/spawner.hpp"
 #include "support/board_builder.hpp"
 
